@@ -1,0 +1,74 @@
+// The bounding volume hierarchy: one wide tree type for the whole library (box queries and the
+// broadphase now; meshes, scenes and rays build on the same nodes).
+//
+// Each node has up to 8 children whose bounds are stored as SoA rows, so one SIMD comparison
+// tests all of them. The tree is built top-down with a binned surface-area heuristic straight
+// into 8-wide nodes (Wald 2007; the way Embree builds its BVH8): a node starts as one child
+// holding all its primitives, and the child with the largest surface area is split until there
+// are 8. Leaves hold one primitive each: the slot's bounds are the primitive's own box, so a
+// slot test is the exact primitive test.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "simdphys/geometry3d.hpp"
+
+namespace simdphys {
+
+struct alignas(64) BvhNode {
+  static constexpr int kWidth = 8;
+  // child[k]: the index of a child node, or kLeaf | (count - 1) << kCountShift | first for a
+  // leaf of `count` primitives starting at `first`. Unused slots have empty bounds
+  // (min = +inf, max = -inf), which no test passes.
+  static constexpr std::uint32_t kLeaf = 1u << 31;
+  static constexpr int kCountShift = 27;
+  static constexpr std::uint32_t kFirstMask = (1u << kCountShift) - 1;
+  static constexpr std::uint32_t kEmpty = ~0u;
+  // Depth bound the build guarantees, and the traversal stack it implies: each level leaves at
+  // most kWidth - 1 siblings on the stack.
+  static constexpr int kMaxDepth = 72;
+  static constexpr int kStackSize = kMaxDepth * (kWidth - 1) + 1;
+
+  float minX[kWidth], minY[kWidth], minZ[kWidth];
+  float maxX[kWidth], maxY[kWidth], maxZ[kWidth];
+  std::uint32_t child[kWidth];
+
+  static bool isLeaf(std::uint32_t c) { return (c & kLeaf) != 0; }
+  static std::uint32_t leafFirst(std::uint32_t c) { return c & kFirstMask; }
+  static std::uint32_t leafCount(std::uint32_t c) { return ((c & ~kLeaf) >> kCountShift) + 1; }
+};
+
+class Bvh {
+ public:
+  // Largest number of primitives a tree can index (27 bits of a leaf reference).
+  static constexpr std::size_t kMaxPrimitives = BvhNode::kFirstMask + 1;
+
+  Bvh() = default;
+  explicit Bvh(const BoxStream& boxes) { build(boxes); }
+
+  // Builds the tree over the boxes; their index in the stream is the primitive id.
+  void build(const BoxStream& boxes);
+  // Updates the bounds after the boxes moved, keeping the topology (cheap, but the tree's quality
+  // degrades with the motion; rebuild when it has moved a lot). Throws Error if the stream's
+  // size differs from the one the tree was built on.
+  void refit(const BoxStream& boxes);
+
+  // Ids of the boxes that overlap `box` (closed test), appended to `out` in traversal order.
+  void query(const Aabb& box, std::vector<std::uint32_t>& out) const;
+  // Number of boxes each query overlaps, summed over the queries.
+  std::uint64_t countOverlaps(std::span<const Aabb> queries) const;
+
+  std::size_t size() const { return primitives_; }
+  std::span<const BvhNode> nodes() const { return nodes_; }
+  // Longest root-to-leaf path, in nodes.
+  int depth() const { return depth_; }
+
+ private:
+  std::vector<BvhNode> nodes_;
+  std::size_t primitives_ = 0;
+  int depth_ = 0;
+};
+
+}  // namespace simdphys

@@ -1,0 +1,438 @@
+// simdphys math: the Eigen types the library speaks and the helpers Eigen lacks (rotations from
+// angles, Euler angles, transforms, view and projection matrices, picking, robust vector helpers).
+// The conventions are fixed once in docs/conventions.md: right-handed, +y up, column vectors,
+// view looks down -z, clip depth in [0, 1], pixel (0,0) top-left with y down, radians.
+//
+// Everything is a header-only template on the scalar type (float or double). Vector and matrix
+// parameters accept any Eigen expression of the right size and scalar (e.g. Vec3f::UnitZ(), a - b);
+// scalar parameters take their type from the first one. Bad input throws simdphys::Error.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <type_traits>
+
+#include "simdphys/core.hpp"
+
+namespace simdphys {
+
+template <class T>
+using Vec2 = Eigen::Matrix<T, 2, 1>;
+template <class T>
+using Vec3 = Eigen::Matrix<T, 3, 1>;
+template <class T>
+using Vec4 = Eigen::Matrix<T, 4, 1>;
+template <class T>
+using Mat2 = Eigen::Matrix<T, 2, 2>;
+template <class T>
+using Mat3 = Eigen::Matrix<T, 3, 3>;
+template <class T>
+using Mat4 = Eigen::Matrix<T, 4, 4>;
+template <class T>
+using Quat = Eigen::Quaternion<T>;
+
+using Vec2f = Vec2<float>;
+using Vec3f = Vec3<float>;
+using Vec4f = Vec4<float>;
+using Mat2f = Mat2<float>;
+using Mat3f = Mat3<float>;
+using Mat4f = Mat4<float>;
+using Quatf = Quat<float>;
+
+using Vec2d = Vec2<double>;
+using Vec3d = Vec3<double>;
+using Vec4d = Vec4<double>;
+using Mat2d = Mat2<double>;
+using Mat3d = Mat3<double>;
+using Mat4d = Mat4<double>;
+using Quatd = Quat<double>;
+
+// A world-space ray through a pixel (see screenToRay).
+template <class T>
+struct ScreenRay {
+  Vec3<T> origin;     // on the near plane
+  Vec3<T> direction;  // unit length, away from the camera
+};
+
+namespace detail {
+
+// Keeps trailing scalar arguments from taking part in deduction, so perspective(1.0f, 1.5, ...)
+// is a float call rather than a deduction conflict.
+template <class T>
+using NoDeduce = std::type_identity_t<T>;
+
+template <class D>
+using ColumnOf = Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, 1>;
+
+template <class T>
+std::string str(T x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+[[noreturn]] inline void fail(const char* fn, const std::string& what) {
+  throw Error(std::string(fn) + ": " + what);
+}
+
+template <std::floating_point T>
+void requireFinite(T x, const char* fn, const char* name) {
+  if (!std::isfinite(x)) fail(fn, std::string(name) + " is not finite (" + str(x) + ")");
+}
+
+template <class D>
+void requireFinite(const Eigen::MatrixBase<D>& v, const char* fn, const char* name) {
+  if (!v.allFinite()) fail(fn, std::string(name) + " has a non-finite component");
+}
+
+// Divides by the largest |component|: the result has the same direction and norm in [1, sqrt(n)],
+// so its dot products and norms neither underflow nor overflow, whatever the magnitude of v.
+template <class D>
+ColumnOf<D> rescaled(const Eigen::MatrixBase<D>& v, const char* fn, const char* name) {
+  static_assert(D::ColsAtCompileTime == 1, "a column vector is expected");
+  static_assert(std::is_floating_point_v<typename D::Scalar>, "float or double expected");
+  requireFinite(v, fn, name);
+  const typename D::Scalar m = v.cwiseAbs().maxCoeff();
+  if (m == 0) fail(fn, std::string(name) + " is the zero vector");
+  return v / m;
+}
+
+template <class D>
+ColumnOf<D> normalized(const Eigen::MatrixBase<D>& v, const char* fn, const char* name) {
+  const ColumnOf<D> s = rescaled(v, fn, name);
+  return s / s.norm();
+}
+
+template <class T>
+void requireViewport(const Vec4<T>& viewport, const char* fn) {
+  requireFinite(viewport, fn, "viewport");
+  if (!(viewport[2] > 0 && viewport[3] > 0))
+    fail(fn, "viewport width and height must be positive, got " + str(viewport[2]) + " x " +
+                 str(viewport[3]));
+}
+
+template <class DA, class DB>
+ColumnOf<DA> project(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& onto,
+                     const char* fn) {
+  const ColumnOf<DB> d = rescaled(onto, fn, "onto");
+  return d * (a.dot(d) / d.squaredNorm());
+}
+
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// Rotations. Positive angles turn counter-clockwise when looking from the positive axis towards
+// the origin (right-hand rule): rotationZ(pi/2) maps +x to +y.
+
+template <std::floating_point T>
+Mat3<T> rotationX(T angle) {
+  const T c = std::cos(angle), s = std::sin(angle);
+  Mat3<T> r;
+  r << 1, 0, 0, 0, c, -s, 0, s, c;
+  return r;
+}
+
+template <std::floating_point T>
+Mat3<T> rotationY(T angle) {
+  const T c = std::cos(angle), s = std::sin(angle);
+  Mat3<T> r;
+  r << c, 0, s, 0, 1, 0, -s, 0, c;
+  return r;
+}
+
+template <std::floating_point T>
+Mat3<T> rotationZ(T angle) {
+  const T c = std::cos(angle), s = std::sin(angle);
+  Mat3<T> r;
+  r << c, -s, 0, s, c, 0, 0, 0, 1;
+  return r;
+}
+
+// R = Ry(yaw) * Rx(pitch) * Rz(roll): roll is applied first, yaw last.
+template <std::floating_point T>
+Mat3<T> eulerToMatrix(T pitch, detail::NoDeduce<T> yaw, detail::NoDeduce<T> roll) {
+  return rotationY(yaw) * rotationX(pitch) * rotationZ(roll);
+}
+
+// Inverse of eulerToMatrix for a rotation matrix: returns (pitch, yaw, roll) with pitch in
+// [-pi/2, pi/2], yaw and roll in [-pi, pi]. At gimbal lock (cos(pitch) <= 16 epsilon) yaw and
+// roll turn about the same axis and only their combination is defined: roll is set to 0 and
+// yaw takes the whole turn. Yaw is solved after roll, from the matrix with roll removed, so
+// eulerToMatrix(result) reproduces the input even near the lock.
+template <class D>
+Vec3<typename D::Scalar> matrixToEuler(const Eigen::MatrixBase<D>& rotation) {
+  using T = typename D::Scalar;
+  const Mat3<T> r = rotation;
+  // Row 1 of Ry*Rx*Rz is (cos(p) sin(r), cos(p) cos(r), -sin(p)).
+  const T cosPitch = std::sqrt(r(1, 0) * r(1, 0) + r(1, 1) * r(1, 1));
+  const T pitch = std::atan2(-r(1, 2), cosPitch);
+  const T roll =
+      cosPitch > 16 * std::numeric_limits<T>::epsilon() ? std::atan2(r(1, 0), r(1, 1)) : T(0);
+  // Column 0 of R * Rz(roll)^T = Ry(yaw) * Rx(pitch) is (cos(yaw), 0, -sin(yaw)).
+  const T cr = std::cos(roll), sr = std::sin(roll);
+  const T yaw = std::atan2(sr * r(2, 1) - cr * r(2, 0), cr * r(0, 0) - sr * r(0, 1));
+  return Vec3<T>(pitch, yaw, roll);
+}
+
+// Rotation by `angle` about `axis` (any length; normalised here). Throws on a zero or non-finite
+// axis or a non-finite angle.
+template <class D>
+Mat3<typename D::Scalar> axisAngle(const Eigen::MatrixBase<D>& axis, typename D::Scalar angle) {
+  using T = typename D::Scalar;
+  const Vec3<T> k = detail::normalized(axis, "axisAngle", "axis");
+  detail::requireFinite(angle, "axisAngle", "angle");
+  const T c = std::cos(angle), s = std::sin(angle);
+  Mat3<T> cross;  // cross * v == k x v
+  cross << 0, -k.z(), k.y(), k.z(), 0, -k.x(), -k.y(), k.x(), 0;
+  // Rodrigues: keeps the part along k, turns the perpendicular part by angle.
+  return c * Mat3<T>::Identity() + s * cross + (1 - c) * k * k.transpose();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Transforms. M = T * R * S: scale first, then rotate, then translate.
+
+template <class DS, class DR, class DT>
+Mat4<typename DS::Scalar> transform(const Eigen::MatrixBase<DS>& scale,
+                                    const Eigen::MatrixBase<DR>& rotation,
+                                    const Eigen::MatrixBase<DT>& translation) {
+  using T = typename DS::Scalar;
+  const Vec3<T> s = scale;
+  const Mat3<T> r = rotation;
+  const Vec3<T> t = translation;
+  Mat4<T> m = Mat4<T>::Identity();
+  m.template topLeftCorner<3, 3>() = r * s.asDiagonal();
+  m.template topRightCorner<3, 1>() = t;
+  return m;
+}
+
+// Same with a quaternion, normalised here (Eigen's toRotationMatrix assumes unit length).
+// Throws on a zero or non-finite quaternion.
+template <class DS, class Q, class DT>
+Mat4<typename DS::Scalar> transform(const Eigen::MatrixBase<DS>& scale,
+                                    const Eigen::QuaternionBase<Q>& rotation,
+                                    const Eigen::MatrixBase<DT>& translation) {
+  using T = typename DS::Scalar;
+  const Quat<T> q = rotation;
+  const Vec4<T> unit = detail::normalized(q.coeffs(), "transform", "rotation quaternion");
+  return transform(scale, Quat<T>(unit).toRotationMatrix(), translation);
+}
+
+// Applies m to the point p (w = 1). If m is affine (last row exactly 0 0 0 1) the result is used
+// as is; otherwise m is projective and the result is divided by its w. Points with w = 0 (on the
+// camera plane of a perspective matrix) come out non-finite.
+template <class DM, class DP>
+Vec3<typename DM::Scalar> transformPoint(const Eigen::MatrixBase<DM>& matrix,
+                                         const Eigen::MatrixBase<DP>& point) {
+  using T = typename DM::Scalar;
+  const Mat4<T> m = matrix;
+  const Vec3<T> p = point;
+  const Vec4<T> h = m * p.homogeneous();
+  const bool affine = m(3, 0) == 0 && m(3, 1) == 0 && m(3, 2) == 0 && m(3, 3) == 1;
+  if (affine) return h.template head<3>();
+  return h.template head<3>() / h.w();
+}
+
+// Applies m to the direction d (w = 0): translation is ignored. Normals need the inverse
+// transpose of m's upper 3x3 instead when m scales non-uniformly.
+template <class DM, class DD>
+Vec3<typename DM::Scalar> transformDirection(const Eigen::MatrixBase<DM>& matrix,
+                                             const Eigen::MatrixBase<DD>& direction) {
+  using T = typename DM::Scalar;
+  const Mat4<T> m = matrix;
+  const Vec3<T> d = direction;
+  return m.template topLeftCorner<3, 3>() * d;
+}
+
+// ---------------------------------------------------------------------------------------------
+// View and projection (right-handed, the view looks down -z, clip depth in [0, 1]).
+
+// World-to-view matrix of a camera at eye looking at target: target lands on the -z axis, up
+// (any length, not necessarily perpendicular to the view direction) appears as +y. Throws if an
+// input is non-finite, eye == target, up is zero or parallel to the view direction.
+template <class DE, class DT, class DU>
+Mat4<typename DE::Scalar> lookAt(const Eigen::MatrixBase<DE>& eye,
+                                 const Eigen::MatrixBase<DT>& target,
+                                 const Eigen::MatrixBase<DU>& up) {
+  using T = typename DE::Scalar;
+  const Vec3<T> e = eye, t = target, u = up;
+  detail::requireFinite(e, "lookAt", "eye");
+  detail::requireFinite(t, "lookAt", "target");
+  detail::requireFinite(u, "lookAt", "up");
+  if (e == t) detail::fail("lookAt", "eye and target coincide");
+  const Vec3<T> forward = detail::normalized(t - e, "lookAt", "target - eye");
+  const Vec3<T> side = forward.cross(detail::normalized(u, "lookAt", "up"));
+  // |side| = sin(angle between up and forward); the cross product's own rounding is ~3 epsilon,
+  // so below a few times that the side direction would be noise.
+  const T sinAngle = side.norm();
+  if (sinAngle <= 16 * std::numeric_limits<T>::epsilon())
+    detail::fail("lookAt", "up is parallel to the view direction");
+  const Vec3<T> right = side / sinAngle;
+  const Vec3<T> trueUp = right.cross(forward);
+  Mat4<T> m;
+  m << right.transpose(), -right.dot(e),  //
+      trueUp.transpose(), -trueUp.dot(e),  //
+      -forward.transpose(), forward.dot(e), 0, 0, 0, 1;
+  return m;
+}
+
+// View-to-clip matrix (as glm::perspectiveRH_ZO): the view point at distance zNear in front of
+// the camera gets depth 0, at zFar depth 1; fovY is the full vertical field of view, aspect is
+// width / height. Throws unless 0 < fovY < pi, aspect > 0, 0 < zNear < zFar, all finite.
+template <std::floating_point T>
+Mat4<T> perspective(T fovY, detail::NoDeduce<T> aspect, detail::NoDeduce<T> zNear,
+                    detail::NoDeduce<T> zFar) {
+  if (!(fovY > 0 && fovY < std::numbers::pi_v<T>))
+    detail::fail("perspective", "fovY must be in (0, pi) radians, got " + detail::str(fovY));
+  if (!(aspect > 0 && std::isfinite(aspect)))
+    detail::fail("perspective", "aspect must be positive and finite, got " + detail::str(aspect));
+  if (!(zNear > 0 && std::isfinite(zNear)))
+    detail::fail("perspective", "zNear must be positive and finite, got " + detail::str(zNear));
+  if (!(zFar > zNear && std::isfinite(zFar)))
+    detail::fail("perspective", "zFar must be finite and greater than zNear, got zNear " +
+                                    detail::str(zNear) + ", zFar " + detail::str(zFar));
+  const T f = 1 / std::tan(fovY / 2);
+  Mat4<T> m = Mat4<T>::Zero();
+  m(0, 0) = f / aspect;
+  m(1, 1) = f;
+  m(2, 2) = zFar / (zNear - zFar);
+  m(2, 3) = zNear * m(2, 2);  // = -zNear zFar / (zFar - zNear); makes depth(zNear) exactly 0
+  m(3, 2) = -1;               // w = distance in front of the camera
+  return m;
+}
+
+// View-to-clip matrix of the box [left, right] x [bottom, top] x [-zFar, -zNear] (as
+// glm::orthoRH_ZO): the box maps onto [-1, 1]^2 x [0, 1]. Throws on a non-finite bound or an
+// empty range (right <= left, top <= bottom, zFar <= zNear); to mirror an axis, scale instead.
+template <std::floating_point T>
+Mat4<T> orthographic(T left, detail::NoDeduce<T> right, detail::NoDeduce<T> bottom,
+                     detail::NoDeduce<T> top, detail::NoDeduce<T> zNear, detail::NoDeduce<T> zFar) {
+  detail::requireFinite(left, "orthographic", "left");
+  detail::requireFinite(right, "orthographic", "right");
+  detail::requireFinite(bottom, "orthographic", "bottom");
+  detail::requireFinite(top, "orthographic", "top");
+  detail::requireFinite(zNear, "orthographic", "zNear");
+  detail::requireFinite(zFar, "orthographic", "zFar");
+  if (!(right > left)) detail::fail("orthographic", "empty x range: right <= left");
+  if (!(top > bottom)) detail::fail("orthographic", "empty y range: top <= bottom");
+  if (!(zFar > zNear)) detail::fail("orthographic", "empty depth range: zFar <= zNear");
+  Mat4<T> m = Mat4<T>::Identity();
+  m(0, 0) = 2 / (right - left);
+  m(1, 1) = 2 / (top - bottom);
+  m(2, 2) = -1 / (zFar - zNear);
+  m(0, 3) = -(right + left) / (right - left);
+  m(1, 3) = -(top + bottom) / (top - bottom);
+  m(2, 3) = -zNear / (zFar - zNear);
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Picking. Window coordinates are (px, py, depth): pixels from the top-left corner of the
+// window, y down, the centre of pixel (i, j) at (i + 0.5, j + 0.5); depth in [0, 1] as in clip
+// space (other depths extrapolate). The viewport is (x, y, width, height) in the same pixels.
+
+// World point whose projection by viewProj (= inverse of inverseViewProj) lands at windowPoint.
+// Throws on a non-finite viewport or one with width or height <= 0.
+template <class DW, class DV, class DM>
+Vec3<typename DW::Scalar> unproject(const Eigen::MatrixBase<DW>& windowPoint,
+                                    const Eigen::MatrixBase<DV>& viewport,
+                                    const Eigen::MatrixBase<DM>& inverseViewProj) {
+  using T = typename DW::Scalar;
+  const Vec3<T> w = windowPoint;
+  const Vec4<T> vp = viewport;
+  const Mat4<T> inv = inverseViewProj;
+  detail::requireViewport(vp, "unproject");
+  const Vec4<T> ndc(2 * (w.x() - vp[0]) / vp[2] - 1,  // x right
+                    1 - 2 * (w.y() - vp[1]) / vp[3],  // pixel y grows down, NDC y up
+                    w.z(), 1);
+  const Vec4<T> h = inv * ndc;
+  return h.template head<3>() / h.w();
+}
+
+// World ray through the window point (px, py) (continuous pixel coordinates as for unproject):
+// the origin is on the near plane, the direction points away from the camera. Works for
+// perspective and orthographic projections. Throws on a bad viewport, or if the point does not
+// unproject to a finite point (non-finite pixel, singular view or projection).
+template <class DV, class DW, class DP>
+ScreenRay<typename DV::Scalar> screenToRay(typename DV::Scalar px, typename DV::Scalar py,
+                                           const Eigen::MatrixBase<DV>& viewport,
+                                           const Eigen::MatrixBase<DW>& view,
+                                           const Eigen::MatrixBase<DP>& projection) {
+  using T = typename DV::Scalar;
+  const Mat4<T> inv = (Mat4<T>(projection) * Mat4<T>(view)).inverse();
+  const Vec3<T> nearPoint = unproject(Vec3<T>(px, py, 0), viewport, inv);
+  const Vec3<T> farPoint = unproject(Vec3<T>(px, py, 1), viewport, inv);
+  if (!nearPoint.allFinite() || !farPoint.allFinite())
+    detail::fail("screenToRay", "the pixel does not unproject to a finite point (non-finite pixel, "
+                                "or singular view or projection)");
+  return {nearPoint, detail::normalized(farPoint - nearPoint, "screenToRay", "far - near")};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vector helpers, for 2D and 3D vectors. Only the direction argument (onto, normal) is
+// validated: it must be finite and non-zero, of any length. They are rescaled internally, so
+// tiny or huge vectors work where the naive formulas underflow or overflow.
+
+// The part of a along onto.
+template <class DA, class DB>
+detail::ColumnOf<DA> project(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& onto) {
+  return detail::project(a, onto, "project");
+}
+
+// The part of a perpendicular to onto: project(a, onto) + reject(a, onto) == a.
+template <class DA, class DB>
+detail::ColumnOf<DA> reject(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& onto) {
+  return a - detail::project(a, onto, "reject");
+}
+
+// v mirrored in the plane (line in 2D) with the given normal; the normal need not be unit length
+// (the book's Reflection assumes it is).
+template <class DV, class DN>
+detail::ColumnOf<DV> reflect(const Eigen::MatrixBase<DV>& v, const Eigen::MatrixBase<DN>& normal) {
+  const detail::ColumnOf<DN> n = detail::rescaled(normal, "reflect", "normal");
+  return v - (2 * v.dot(n) / n.squaredNorm()) * n;
+}
+
+// Unsigned angle in [0, pi] between a and b, as atan2(|a x b|, a . b): accurate to a few ulp
+// for all angles, where acos(a . b / |a||b|) loses half the digits near 0 and pi. Throws on a
+// zero or non-finite vector.
+template <class DA, class DB>
+typename DA::Scalar angleBetween(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b) {
+  static_assert(DA::SizeAtCompileTime == 2 || DA::SizeAtCompileTime == 3, "2D or 3D vectors");
+  const detail::ColumnOf<DA> ua = detail::rescaled(a, "angleBetween", "a");
+  const detail::ColumnOf<DB> ub = detail::rescaled(b, "angleBetween", "b");
+  if constexpr (DA::SizeAtCompileTime == 3) {
+    return std::atan2(ua.cross(ub).norm(), ua.dot(ub));
+  } else {
+    return std::atan2(std::abs(ua.x() * ub.y() - ua.y() * ub.x()), ua.dot(ub));
+  }
+}
+
+// Tolerant comparison: |a - b| <= max(absTol, relTol * max(|a|, |b|)). The defaults (epsilon for
+// both) are the book's CMP. Equal values (including equal infinities) compare equal; NaN never.
+template <std::floating_point T>
+bool nearlyEqual(T a, detail::NoDeduce<T> b,
+                 detail::NoDeduce<T> relTol = std::numeric_limits<T>::epsilon(),
+                 detail::NoDeduce<T> absTol = std::numeric_limits<T>::epsilon()) {
+  if (a == b) return true;
+  return std::abs(a - b) <= std::max(absTol, relTol * std::max(std::abs(a), std::abs(b)));
+}
+
+// Same for vectors and matrices, on Euclidean (Frobenius) norms rather than per component as in
+// the book: the test does not depend on the orientation of the axes.
+template <class DA, class DB>
+bool nearlyEqual(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b,
+                 typename DA::Scalar relTol = std::numeric_limits<typename DA::Scalar>::epsilon(),
+                 typename DA::Scalar absTol = std::numeric_limits<typename DA::Scalar>::epsilon()) {
+  if (a == b) return true;
+  return (a - b).norm() <= std::max(absTol, relTol * std::max(a.norm(), b.norm()));
+}
+
+}  // namespace simdphys

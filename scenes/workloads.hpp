@@ -1,0 +1,58 @@
+// The standard workloads (docs/workloads.md), generated exactly: the same inputs for the tests,
+// the benchmarks, the peers and the demo. Compiled without floating-point contraction so the
+// draws round as the specification says.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "simdphys/geometry3d.hpp"
+#include "simdphys/scene.hpp"
+
+namespace simdphys::scenes {
+
+// SplitMix64 and the float draws built on it.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next();
+  float u01();                     // [0, 1), 24 bits
+  float uniform(float a, float b);  // a + (b - a) * u01(), rounded before the addition
+  Vec3f unitDirection();            // rejection-sampled in the unit ball, then normalised
+
+ private:
+  std::uint64_t state_;
+};
+
+// W1: N boxes and Q query boxes from seed 1.
+struct AabbWorkload {
+  BoxStream boxes;
+  std::vector<Aabb> queries;
+};
+AabbWorkload makeAabbWorkload(std::size_t boxes, std::size_t queries = 1024);
+
+// The reference figures of W1, for N = 100,000 and 1,000,000.
+struct AabbReference {
+  std::size_t boxes;
+  std::uint64_t queryOverlaps, pairs, checksum;
+};
+inline constexpr AabbReference kAabbReference[] = {
+    {100'000, 14'452, 20'234, 66'755'941'226'798ull},
+    {1'000'000, 148'413, 2'016'018, 671'287'551'327'981'067ull},
+};
+// The W1 pairs checksum: the sum over pairs of (a * N + b), modulo 2^64.
+std::uint64_t pairChecksum(std::span<const Pair> pairs, std::size_t n);
+
+// W6: N spheres (and the same as boxes) from seed 6, and the camera's frustum.
+struct CullWorkload {
+  SphereStream spheres;
+  BoundsStream boxes;
+  Mat4d viewProjection;
+  Frustum frustum;  // from viewProjection, normals computed in double then rounded
+};
+CullWorkload makeCullWorkload(std::size_t n = 1'000'000);
+inline constexpr std::size_t kCullSpheresVisible = 101'017;
+inline constexpr std::size_t kCullBoxesVisible = 102'099;
+
+}  // namespace simdphys::scenes

@@ -1,0 +1,112 @@
+// W6: spheres and boxes against the six planes of a frustum. Streaming and memory bound: one pass,
+// visible indices compacted with CompressStore. Sums are evaluated in the order of the scalar
+// reference (scene.hpp) without fusing, so every path returns the same indices.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "simd/cull.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd/kernels.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace simdphys::simd {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// `visible(d, i, k)` gives the lanes that plane k keeps, for the vector at element i.
+template <class Visible>
+std::size_t compact(std::size_t padded, std::uint32_t* out, Visible visible) {
+  const hn::ScalableTag<float> d;
+  const hn::RebindToUnsigned<decltype(d)> du;
+  const std::size_t n = hn::Lanes(d);
+  auto index = hn::Iota(du, 0);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < padded; i += n) {
+    auto keep = visible(d, i, 0);
+    for (int k = 1; k < 6; ++k) keep = hn::And(keep, visible(d, i, k));
+    count += hn::CompressStore(index, hn::RebindMask(du, keep), du, out + count);
+    index = hn::Add(index, hn::Set(du, static_cast<std::uint32_t>(n)));
+  }
+  return count;
+}
+
+template <class D>
+auto planeDistance(D d, const Planes& p, int k, hn::Vec<D> x, hn::Vec<D> y, hn::Vec<D> z) {
+  auto dot = hn::Add(hn::Add(hn::Mul(hn::Set(d, p.nx[k]), x), hn::Mul(hn::Set(d, p.ny[k]), y)),
+                     hn::Mul(hn::Set(d, p.nz[k]), z));
+  return hn::Add(dot, hn::Set(d, p.d[k]));
+}
+
+std::size_t CullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* out) {
+  return compact(s.padded, out, [&](auto d, std::size_t i, int k) {
+    auto dist = planeDistance(d, p, k, hn::Load(d, s.x + i), hn::Load(d, s.y + i),
+                              hn::Load(d, s.z + i));
+    return hn::Ge(dist, hn::Neg(hn::Load(d, s.r + i)));
+  });
+}
+
+std::size_t CullBounds(const Planes& p, const BoundsView& b, std::uint32_t* out) {
+  return compact(b.padded, out, [&](auto d, std::size_t i, int k) {
+    auto dist = planeDistance(d, p, k, hn::Load(d, b.cx + i), hn::Load(d, b.cy + i),
+                              hn::Load(d, b.cz + i));
+    auto reach = hn::Add(hn::Add(hn::Mul(hn::Set(d, std::abs(p.nx[k])), hn::Load(d, b.ex + i)),
+                                 hn::Mul(hn::Set(d, std::abs(p.ny[k])), hn::Load(d, b.ey + i))),
+                         hn::Mul(hn::Set(d, std::abs(p.nz[k])), hn::Load(d, b.ez + i)));
+    return hn::Ge(hn::Add(dist, reach), hn::Zero(d));
+  });
+}
+
+// Baselines: the same tests as plain loops, compiled for this target and left to the compiler.
+std::size_t CullSpheresAutovec(const Planes& p, const SpheresView& s, std::uint32_t* out) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < s.padded; ++i) {
+    bool visible = true;
+    for (int k = 0; k < 6; ++k)
+      visible &= p.nx[k] * s.x[i] + p.ny[k] * s.y[i] + p.nz[k] * s.z[i] + p.d[k] >= -s.r[i];
+    out[count] = static_cast<std::uint32_t>(i);
+    count += visible;
+  }
+  return count;
+}
+
+std::size_t CullBoundsAutovec(const Planes& p, const BoundsView& b, std::uint32_t* out) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < b.padded; ++i) {
+    bool visible = true;
+    for (int k = 0; k < 6; ++k) {
+      float dist = p.nx[k] * b.cx[i] + p.ny[k] * b.cy[i] + p.nz[k] * b.cz[i] + p.d[k];
+      float reach = std::abs(p.nx[k]) * b.ex[i] + std::abs(p.ny[k]) * b.ey[i] +
+                    std::abs(p.nz[k]) * b.ez[i];
+      visible &= dist + reach >= 0.0f;
+    }
+    out[count] = static_cast<std::uint32_t>(i);
+    count += visible;
+  }
+  return count;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace simdphys::simd
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace simdphys::simd {
+HWY_EXPORT(CullSpheres);
+HWY_EXPORT(CullBounds);
+HWY_EXPORT(CullSpheresAutovec);
+HWY_EXPORT(CullBoundsAutovec);
+
+std::size_t cullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* out) {
+  return HWY_DYNAMIC_DISPATCH(CullSpheres)(p, s, out);
+}
+std::size_t cullBounds(const Planes& p, const BoundsView& b, std::uint32_t* out) {
+  return HWY_DYNAMIC_DISPATCH(CullBounds)(p, b, out);
+}
+std::size_t cullSpheresAutovec(const Planes& p, const SpheresView& s, std::uint32_t* out) {
+  return HWY_DYNAMIC_DISPATCH(CullSpheresAutovec)(p, s, out);
+}
+std::size_t cullBoundsAutovec(const Planes& p, const BoundsView& b, std::uint32_t* out) {
+  return HWY_DYNAMIC_DISPATCH(CullBoundsAutovec)(p, b, out);
+}
+}  // namespace simdphys::simd
+#endif

@@ -1,0 +1,88 @@
+// The interface between the library and its SIMD kernels. Plain pointers and counts only: no
+// Highway and no Eigen types cross it, so each kernel file is compiled once per instruction set
+// and chosen at run time (see dispatch.cpp). Every array is a padded stream (core.hpp): kernels
+// read whole vectors up to `padded` and rely on the padding value to produce no result.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "simdphys/core.hpp"
+
+namespace simdphys {
+struct BvhNode;  // bvh.hpp: plain arrays, no Eigen
+}
+
+namespace simdphys::simd {
+
+// ---- dispatch --------------------------------------------------------------------------------
+// Names of the compiled SIMD targets this CPU supports, best first ("avx512", "avx2", ...).
+std::vector<std::string> supportedTargets();
+// Makes the named target the one HWY_DYNAMIC_DISPATCH calls. Returns false if unsupported.
+bool selectTarget(const std::string& name);
+
+// ---- views -----------------------------------------------------------------------------------
+// Boxes as min/max SoA. Padding boxes are empty (min = +inf, max = -inf).
+struct BoxesView {
+  const float *minX, *minY, *minZ, *maxX, *maxY, *maxZ;
+  std::size_t count, padded;
+};
+struct Box {
+  float minX, minY, minZ, maxX, maxY, maxZ;
+};
+// Spheres as centre/radius SoA. Padding has radius -inf.
+struct SpheresView {
+  const float *x, *y, *z, *r;
+  std::size_t count, padded;
+};
+// Boxes as centre/half-extent SoA (what culling wants). Padding has extent -inf.
+struct BoundsView {
+  const float *cx, *cy, *cz, *ex, *ey, *ez;
+  std::size_t count, padded;
+};
+// Six planes n.p + d >= 0 inside, SoA.
+struct Planes {
+  float nx[6], ny[6], nz[6], d[6];
+};
+
+// ---- W1: box overlap --------------------------------------------------------------------------
+// Brute force: for each query, the number of boxes it overlaps (closed test); returns the total.
+std::uint64_t countOverlapsBrute(const BoxesView& boxes, const Box* queries, std::size_t nQueries);
+// The same computation as a plain loop left to the compiler's auto-vectoriser (the baseline).
+std::uint64_t countOverlapsAutovec(const BoxesView& boxes, const Box* queries,
+                                   std::size_t nQueries);
+
+// Tree queries (bvh.hpp): the total number of (query, box) overlaps, and the ids overlapping one
+// query appended to `out`.
+std::uint64_t bvhCountOverlaps(const BvhNode* nodes, std::size_t nodeCount, const Box* queries,
+                               std::size_t nQueries);
+void bvhQuery(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
+              std::vector<std::uint32_t>& out);
+
+// ---- W1: broadphase pairs -------------------------------------------------------------------
+// One cell of the sweep grid: its boxes sorted by minX, each with its id and the first grid row
+// (loY) and column (loZ) it covers, followed by kStreamPad sentinel entries (minX = +inf).
+struct SweepCell {
+  const float *minX, *maxX, *minY, *maxY, *minZ, *maxZ;
+  const std::uint32_t* id;
+  const std::int32_t *loY, *loZ;
+  std::size_t count;
+  std::int32_t cellY, cellZ;
+};
+// Appends the overlapping pairs of the cell that belong to it: a pair shared by several cells
+// belongs to the cell holding the low corner of the two boxes' intersection, so it is reported
+// once. Pairs are (smaller id, larger id), in sweep order.
+void sweepCell(const SweepCell& cell, std::vector<Pair>& out);
+void sweepCellAutovec(const SweepCell& cell, std::vector<Pair>& out);
+
+// ---- W6: frustum culling ----------------------------------------------------------------------
+// Writes the indices of visible objects, ascending, to `out` (room for `padded` indices) and
+// returns how many. The plain-loop baselines have the same contract.
+std::size_t cullSpheres(const Planes& planes, const SpheresView& s, std::uint32_t* out);
+std::size_t cullBounds(const Planes& planes, const BoundsView& b, std::uint32_t* out);
+std::size_t cullSpheresAutovec(const Planes& planes, const SpheresView& s, std::uint32_t* out);
+std::size_t cullBoundsAutovec(const Planes& planes, const BoundsView& b, std::uint32_t* out);
+
+}  // namespace simdphys::simd

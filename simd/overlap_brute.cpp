@@ -1,0 +1,73 @@
+// Brute-force box overlap counting: every query against every box, the boxes in L1-sized blocks
+// so each block is read from memory once for all queries.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "simd/overlap_brute.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd/kernels.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace simdphys::simd {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+constexpr std::size_t kBlock = 1024;  // 24 KiB of boxes
+
+template <class CountBlock>
+std::uint64_t blocked(const BoxesView& b, const Box* queries, std::size_t nQueries,
+                      CountBlock countBlock) {
+  std::uint64_t total = 0;
+  for (std::size_t begin = 0; begin < b.padded; begin += kBlock) {
+    std::size_t end = std::min(b.padded, begin + kBlock);
+    for (std::size_t q = 0; q < nQueries; ++q) total += countBlock(queries[q], begin, end);
+  }
+  return total;
+}
+
+std::uint64_t CountOverlapsBrute(const BoxesView& b, const Box* queries, std::size_t nQueries) {
+  const hn::ScalableTag<float> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  return blocked(b, queries, nQueries, [&](const Box& q, std::size_t begin, std::size_t end) {
+    const auto qMinX = hn::Set(d, q.minX), qMinY = hn::Set(d, q.minY), qMinZ = hn::Set(d, q.minZ);
+    const auto qMaxX = hn::Set(d, q.maxX), qMaxY = hn::Set(d, q.maxY), qMaxZ = hn::Set(d, q.maxZ);
+    // Counts accumulate per lane (a true mask lane is -1) and are reduced once per block.
+    auto counts = hn::Zero(di);
+    for (std::size_t i = begin; i < end; i += hn::Lanes(d)) {
+      auto x = hn::And(hn::Le(hn::Load(d, b.minX + i), qMaxX), hn::Le(qMinX, hn::Load(d, b.maxX + i)));
+      auto y = hn::And(hn::Le(hn::Load(d, b.minY + i), qMaxY), hn::Le(qMinY, hn::Load(d, b.maxY + i)));
+      auto z = hn::And(hn::Le(hn::Load(d, b.minZ + i), qMaxZ), hn::Le(qMinZ, hn::Load(d, b.maxZ + i)));
+      counts = hn::Sub(counts, hn::VecFromMask(di, hn::RebindMask(di, hn::And(x, hn::And(y, z)))));
+    }
+    return std::uint64_t(hn::GetLane(hn::SumOfLanes(di, counts)));
+  });
+}
+
+// Baseline: the same loop in plain C++, compiled for this target and left to the compiler.
+std::uint64_t CountOverlapsAutovec(const BoxesView& b, const Box* queries, std::size_t nQueries) {
+  return blocked(b, queries, nQueries, [&](const Box& q, std::size_t begin, std::size_t end) {
+    std::uint32_t count = 0;
+    for (std::size_t i = begin; i < end; ++i)
+      count += (b.minX[i] <= q.maxX) & (q.minX <= b.maxX[i]) & (b.minY[i] <= q.maxY) &
+               (q.minY <= b.maxY[i]) & (b.minZ[i] <= q.maxZ) & (q.minZ <= b.maxZ[i]);
+    return std::uint64_t(count);
+  });
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace simdphys::simd
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace simdphys::simd {
+HWY_EXPORT(CountOverlapsBrute);
+HWY_EXPORT(CountOverlapsAutovec);
+
+std::uint64_t countOverlapsBrute(const BoxesView& b, const Box* queries, std::size_t nQueries) {
+  return HWY_DYNAMIC_DISPATCH(CountOverlapsBrute)(b, queries, nQueries);
+}
+std::uint64_t countOverlapsAutovec(const BoxesView& b, const Box* queries, std::size_t nQueries) {
+  return HWY_DYNAMIC_DISPATCH(CountOverlapsAutovec)(b, queries, nQueries);
+}
+}  // namespace simdphys::simd
+#endif

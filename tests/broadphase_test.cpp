@@ -1,0 +1,83 @@
+// Pair finding: every method on every path equals brute force, in a deterministic order.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "box_sets.hpp"
+#include "paths.hpp"
+
+namespace simdphys {
+namespace {
+
+using test::OnEveryPath;
+
+constexpr PairMethod kMethods[] = {PairMethod::kGridSweep, PairMethod::kSweep, PairMethod::kBvh};
+
+std::vector<Pair> sorted(std::vector<Pair> p) {
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
+void expectPairsEqualBruteForce(const BoxStream& boxes) {
+  const std::vector<Pair> want = test::bruteForcePairs(boxes);
+  for (PairMethod m : kMethods) {
+    SCOPED_TRACE("method " + std::to_string(int(m)));
+    std::vector<Pair> pairs;
+    findPairs(boxes, pairs, m);
+    for (const Pair& p : pairs) ASSERT_LT(p.a, p.b);
+    ASSERT_EQ(sorted(pairs), want);  // same set, each pair once
+  }
+}
+
+class Pairs : public OnEveryPath {};
+SIMDPHYS_ON_EVERY_PATH(Pairs);
+
+TEST_P(Pairs, RandomBoxesEqualBruteForce) {
+  expectPairsEqualBruteForce(test::randomBoxes(31, 4000, 60, 0.1f, 3));
+}
+
+TEST_P(Pairs, HardSetsEqualBruteForce) {
+  for (const test::BoxSet& set : test::hardBoxSets()) {
+    SCOPED_TRACE(set.name);
+    expectPairsEqualBruteForce(set.boxes);
+  }
+}
+
+TEST_P(Pairs, NoBoxesAndOneBox) {
+  BoxStream boxes;
+  std::vector<Pair> pairs{{0, 1}};
+  findPairs(boxes, pairs);
+  EXPECT_TRUE(pairs.empty());  // the output is replaced, not appended to
+  boxes.push({Vec3f::Zero(), Vec3f::Ones()});
+  findPairs(boxes, pairs);
+  EXPECT_TRUE(pairs.empty());
+}
+
+// The order is a function of the input only: the SIMD sweep and the scalar one report the same
+// pairs in the same order, run after run.
+TEST_P(Pairs, OrderIsDeterministicAndPathIndependent) {
+  BoxStream boxes = test::randomBoxes(32, 5000, 50, 0.1f, 2);
+  std::vector<Pair> here, again, reference;
+  findPairs(boxes, here);
+  findPairs(boxes, again);
+  {
+    ScopedPath ref("reference");
+    findPairs(boxes, reference);
+  }
+  EXPECT_EQ(here, again);
+  EXPECT_EQ(here, reference);
+}
+
+// W1 at N = 100,000: the exact reference figures of the workload specification.
+TEST_P(Pairs, W1ReferenceFigures) {
+  const scenes::AabbReference& ref = scenes::kAabbReference[0];
+  scenes::AabbWorkload w = scenes::makeAabbWorkload(ref.boxes);
+  std::vector<Pair> pairs;
+  findPairs(w.boxes, pairs);
+  EXPECT_EQ(pairs.size(), ref.pairs);
+  EXPECT_EQ(scenes::pairChecksum(pairs, ref.boxes), ref.checksum);
+  EXPECT_EQ(Bvh(w.boxes).countOverlaps(w.queries), ref.queryOverlaps);
+}
+
+}  // namespace
+}  // namespace simdphys

@@ -1,0 +1,115 @@
+// Paths and streams: dispatch, alignment, padding, validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "paths.hpp"
+#include "simdphys/geometry3d.hpp"
+
+namespace simdphys {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+TEST(Paths, ReferenceIsLastAndBestSimdIsDefault) {
+  std::vector<std::string> paths = availablePaths();
+  ASSERT_FALSE(paths.empty());
+  EXPECT_EQ(paths.back(), "reference");
+  // Highway always compiles at least the baseline target, so some SIMD path exists on x86.
+  EXPECT_GE(paths.size(), 2u);
+}
+
+TEST(Paths, SettingEachPathMakesItActive) {
+  std::string before = activePath();
+  for (const std::string& p : availablePaths()) {
+    setPath(p);
+    EXPECT_EQ(activePath(), p);
+    EXPECT_EQ(referencePathActive(), p == "reference");
+  }
+  setPath(before);
+}
+
+TEST(Paths, UnknownPathIsAClearErrorAndChangesNothing) {
+  std::string before = activePath();
+  try {
+    setPath("avx9000");
+    FAIL() << "setPath accepted an unknown path";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("avx9000"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("available"), std::string::npos);
+  }
+  EXPECT_EQ(activePath(), before);
+}
+
+TEST(Paths, ScopedPathRestores) {
+  std::string before = activePath();
+  {
+    ScopedPath guard("reference");
+    EXPECT_TRUE(referencePathActive());
+  }
+  EXPECT_EQ(activePath(), before);
+}
+
+TEST(Streams, AlignedAndPaddedWithInertValues) {
+  BoxStream boxes;
+  for (int i = 0; i < 17; ++i) boxes.push({Vec3f::Constant(float(i)), Vec3f::Constant(i + 1.0f)});
+  EXPECT_EQ(boxes.size(), 17u);
+  EXPECT_EQ(boxes.padded(), 32u);  // next multiple of kStreamPad = 16
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(boxes.minX().data()) % kStreamAlign, 0u);
+  for (std::size_t i = 17; i < boxes.padded(); ++i) {
+    EXPECT_EQ(boxes.minX()[i], kInf);
+    EXPECT_EQ(boxes.maxZ()[i], -kInf);
+  }
+  SphereStream spheres;
+  spheres.push({Vec3f::Zero(), 1});
+  EXPECT_EQ(spheres.padded(), 16u);
+  EXPECT_EQ(spheres.r()[15], -kInf);
+}
+
+TEST(Streams, RoundTripsValues) {
+  BoxStream boxes;
+  Aabb b{{-1, -2, -3}, {4, 5, 6}};
+  boxes.push(b);
+  EXPECT_EQ(boxes[0].min, b.min);
+  EXPECT_EQ(boxes[0].max, b.max);
+  Aabb c{{0, 0, 0}, {0, 0, 0}};  // a point is a valid (flat) box
+  boxes.set(0, c);
+  EXPECT_EQ(boxes[0].max, c.max);
+}
+
+// The message names the function, the element and the field.
+void expectError(auto&& f, const std::string& fragment) {
+  try {
+    f();
+    FAIL() << "no error; expected one mentioning '" << fragment << "'";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(Streams, RejectsBadBoxesSayingWhere) {
+  BoxStream boxes;
+  boxes.push({Vec3f::Zero(), Vec3f::Ones()});
+  expectError([&] { boxes.push({{0, kNaN, 0}, Vec3f::Ones()}); }, "element 1: min.y is nan");
+  expectError([&] { boxes.push({Vec3f::Zero(), {1, 1, kInf}}); }, "element 1: max.z is inf");
+  expectError([&] { boxes.push({{0, 0, 2}, {1, 1, 1}}); }, "min.z (2) > max.z (1)");
+  expectError([&] { boxes.set(0, {{2, 0, 0}, {1, 1, 1}}); }, "BoxStream::set: element 0");
+  expectError([&] { boxes.set(5, {Vec3f::Zero(), Vec3f::Ones()}); }, "out of range");
+  EXPECT_EQ(boxes.size(), 1u);  // nothing was added by the failed pushes
+}
+
+TEST(Streams, RejectsBadSpheresAndBounds) {
+  SphereStream spheres;
+  expectError([&] { spheres.push({{kInf, 0, 0}, 1}); }, "center.x is inf");
+  expectError([&] { spheres.push({Vec3f::Zero(), -1}); }, "radius is -1");
+  expectError([&] { spheres.push({Vec3f::Zero(), kNaN}); }, "radius is nan");
+  BoundsStream bounds;
+  expectError([&] { bounds.push(Vec3f::Zero(), {1, -1, 1}); }, "halfExtents.y is negative");
+  expectError([&] { bounds.push({0, 0, kNaN}, Vec3f::Ones()); }, "center.z is nan");
+  EXPECT_EQ(spheres.size() + bounds.size(), 0u);
+}
+
+}  // namespace
+}  // namespace simdphys
