@@ -277,7 +277,7 @@ Mat4<typename DE::Scalar> lookAt(const Eigen::MatrixBase<DE>& eye,
   const Vec3<T> right = side / sinAngle;
   const Vec3<T> trueUp = right.cross(forward);
   Mat4<T> m;
-  m << right.transpose(), -right.dot(e),  //
+  m << right.transpose(), -right.dot(e),   //
       trueUp.transpose(), -trueUp.dot(e),  //
       -forward.transpose(), forward.dot(e), 0, 0, 0, 1;
   return m;
@@ -370,8 +370,9 @@ ScreenRay<typename DV::Scalar> screenToRay(typename DV::Scalar px, typename DV::
   const Vec3<T> nearPoint = unproject(Vec3<T>(px, py, 0), viewport, inv);
   const Vec3<T> farPoint = unproject(Vec3<T>(px, py, 1), viewport, inv);
   if (!nearPoint.allFinite() || !farPoint.allFinite())
-    detail::fail("screenToRay", "the pixel does not unproject to a finite point (non-finite pixel, "
-                                "or singular view or projection)");
+    detail::fail("screenToRay",
+                 "the pixel does not unproject to a finite point (non-finite pixel, "
+                 "or singular view or projection)");
   return {nearPoint, detail::normalized(farPoint - nearPoint, "screenToRay", "far - near")};
 }
 
@@ -416,12 +417,14 @@ typename DA::Scalar angleBetween(const Eigen::MatrixBase<DA>& a, const Eigen::Ma
 }
 
 // Tolerant comparison: |a - b| <= max(absTol, relTol * max(|a|, |b|)). The defaults (epsilon for
-// both) are the book's CMP. Equal values (including equal infinities) compare equal; NaN never.
+// both) are the book's CMP. Equal values (including equal infinities) compare equal; otherwise
+// an infinity or a NaN never does.
 template <std::floating_point T>
 bool nearlyEqual(T a, detail::NoDeduce<T> b,
                  detail::NoDeduce<T> relTol = std::numeric_limits<T>::epsilon(),
                  detail::NoDeduce<T> absTol = std::numeric_limits<T>::epsilon()) {
   if (a == b) return true;
+  if (!std::isfinite(a) || !std::isfinite(b)) return false;  // else inf <= eps * inf passes
   return std::abs(a - b) <= std::max(absTol, relTol * std::max(std::abs(a), std::abs(b)));
 }
 
@@ -432,6 +435,7 @@ bool nearlyEqual(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b,
                  typename DA::Scalar relTol = std::numeric_limits<typename DA::Scalar>::epsilon(),
                  typename DA::Scalar absTol = std::numeric_limits<typename DA::Scalar>::epsilon()) {
   if (a == b) return true;
+  if (!a.allFinite() || !b.allFinite()) return false;
   return (a - b).norm() <= std::max(absTol, relTol * std::max(a.norm(), b.norm()));
 }
 
