@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -20,9 +21,34 @@ enum class PairMethod {
   kBvh,
 };
 
-// All overlapping pairs (closed test) among the boxes, each once as (a, b) with a < b, written
-// to `pairs`. The order is deterministic (it depends only on the input and the method): grid
-// cell by cell, and within a cell in sweep order. Runs on the active path.
+// Finds all overlapping pairs (closed test) among boxes, each once as (a, b) with a < b. The
+// order is deterministic: it depends only on the input and the method, not on the path or the
+// number of threads (grid row by row, cell by cell, and within a cell in sweep order). Cells are
+// swept in parallel with OpenMP. Keeps its working memory from call to call, as a world's
+// broadphase does from step to step.
+class PairFinder;
+namespace detail {
+void findPairsAutovec(PairFinder&, const BoxStream&, std::vector<Pair>&);  // benchmark baseline
+}
+
+class PairFinder {
+ public:
+  PairFinder();
+  ~PairFinder();
+  PairFinder(PairFinder&&) noexcept;
+  PairFinder& operator=(PairFinder&&) noexcept;
+
+  // Replaces `pairs` with the overlapping pairs of `boxes`. Runs on the active path.
+  void find(const BoxStream& boxes, std::vector<Pair>& pairs,
+            PairMethod method = PairMethod::kGridSweep);
+
+ private:
+  friend void detail::findPairsAutovec(PairFinder&, const BoxStream&, std::vector<Pair>&);
+  struct Scratch;
+  std::unique_ptr<Scratch> scratch_;
+};
+
+// One-off form of PairFinder::find.
 void findPairs(const BoxStream& boxes, std::vector<Pair>& pairs,
                PairMethod method = PairMethod::kGridSweep);
 

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <limits>
 
+#include <omp.h>
+
 #include "../core/radix_sort.hpp"
+#include "pairs.hpp"
 #include "../views.hpp"
 #include "simdphys/broadphase.hpp"
 #include "simdphys/bvh.hpp"
@@ -18,7 +21,7 @@ namespace {
 // Boxes per grid cell the grid aims at: few enough that the sweep's candidate lists along x stay
 // short, many enough that boxes spanning two cells stay rare. Chosen by measurement (see
 // docs/broadphase.md).
-constexpr double kBoxesPerCell = 2048;
+constexpr double kBoxesPerCell = 1024;
 // Cells are at least this many average box sizes wide, so few boxes are copied into two cells.
 constexpr double kMinCellInBoxes = 4;
 
@@ -54,53 +57,44 @@ Grid chooseGrid(const BoxStream& b, PairMethod method) {
   return g;
 }
 
-// The boxes copied into their cells, each cell sorted by minX and followed by sentinels.
-struct CellStreams {
+// A box as copied into one of its cells: 32 bytes, so the scatter into cells writes one
+// stream per cell rather than nine.
+struct Entry {
+  float minX, maxX, minY, maxY, minZ, maxZ;
+  std::uint32_t id;
+  std::int16_t loY, loZ;
+};
+static_assert(sizeof(Entry) == 32);
+
+// One cell's boxes transposed to the SoA the sweep kernels read, followed by sentinels.
+struct CellBuffer {
   std::vector<float> minX, maxX, minY, maxY, minZ, maxZ;
   std::vector<std::uint32_t> id;
   std::vector<std::int32_t> loY, loZ;
-  std::vector<std::size_t> begin, count;
 
-  simd::SweepCell cell(const Grid& g, int cy, int cz) const {
-    std::size_t c = std::size_t(cy) * g.nz + cz, at = begin[c];
-    return {minX.data() + at, maxX.data() + at, minY.data() + at, maxY.data() + at,
-            minZ.data() + at, maxZ.data() + at, id.data() + at,   loY.data() + at,
-            loZ.data() + at,  count[c],         cy,               cz};
+  std::vector<float> keys;
+  RadixSorter sorter;
+
+  // Sorts the cell's entries by minX (ties in id order, as the entries come) while transposing
+  // them. The cell is small enough to stay in cache, unlike a global sort's scattered reads.
+  simd::SweepCell load(const Entry* e, std::size_t n, int cy, int cz) {
+    const float inf = std::numeric_limits<float>::infinity();
+    const std::size_t size = n + kStreamPad;
+    for (auto* v : {&minX, &minY, &minZ}) v->assign(size, inf);
+    for (auto* v : {&maxX, &maxY, &maxZ}) v->assign(size, -inf);
+    id.resize(size), loY.resize(size), loZ.resize(size), keys.resize(n);
+    for (std::size_t k = 0; k < n; ++k) keys[k] = e[k].minX;
+    const std::vector<std::uint32_t>& order = sorter.sort(keys.data(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Entry& from = e[order[k]];
+      minX[k] = from.minX, maxX[k] = from.maxX, minY[k] = from.minY, maxY[k] = from.maxY;
+      minZ[k] = from.minZ, maxZ[k] = from.maxZ, id[k] = from.id;
+      loY[k] = from.loY, loZ[k] = from.loZ;
+    }
+    return {minX.data(), maxX.data(), minY.data(), maxY.data(), minZ.data(), maxZ.data(),
+            id.data(),   loY.data(),  loZ.data(),  n,           cy,          cz};
   }
 };
-
-CellStreams fillCells(const BoxStream& b, const Grid& g) {
-  const std::size_t n = b.size(), cells = std::size_t(g.ny) * g.nz;
-  std::vector<std::int32_t> y0(n), y1(n), z0(n), z1(n);
-  CellStreams s;
-  s.count.assign(cells, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    y0[i] = g.cellY(b.minY()[i]), y1[i] = g.cellY(b.maxY()[i]);
-    z0[i] = g.cellZ(b.minZ()[i]), z1[i] = g.cellZ(b.maxZ()[i]);
-    for (int cy = y0[i]; cy <= y1[i]; ++cy)
-      for (int cz = z0[i]; cz <= z1[i]; ++cz) ++s.count[std::size_t(cy) * g.nz + cz];
-  }
-  s.begin.resize(cells);
-  std::size_t total = 0;
-  for (std::size_t c = 0; c < cells; ++c) s.begin[c] = total, total += s.count[c] + kStreamPad;
-  const float inf = std::numeric_limits<float>::infinity();
-  s.minX.assign(total, inf), s.minY.assign(total, inf), s.minZ.assign(total, inf);
-  s.maxX.assign(total, -inf), s.maxY.assign(total, -inf), s.maxZ.assign(total, -inf);
-  s.id.assign(total, 0), s.loY.assign(total, 0), s.loZ.assign(total, 0);
-  std::vector<std::size_t> cursor = s.begin;
-  // Visiting the boxes in minX order leaves every cell sorted.
-  for (std::uint32_t i : sortedOrder(b.minX().data(), n)) {
-    for (int cy = y0[i]; cy <= y1[i]; ++cy) {
-      for (int cz = z0[i]; cz <= z1[i]; ++cz) {
-        std::size_t k = cursor[std::size_t(cy) * g.nz + cz]++;
-        s.minX[k] = b.minX()[i], s.minY[k] = b.minY()[i], s.minZ[k] = b.minZ()[i];
-        s.maxX[k] = b.maxX()[i], s.maxY[k] = b.maxY()[i], s.maxZ[k] = b.maxZ()[i];
-        s.id[k] = i, s.loY[k] = y0[i], s.loZ[k] = z0[i];
-      }
-    }
-  }
-  return s;
-}
 
 void bvhPairs(const BoxStream& b, std::vector<Pair>& pairs) {
   Bvh tree(b);
@@ -115,21 +109,77 @@ void bvhPairs(const BoxStream& b, std::vector<Pair>& pairs) {
 
 }  // namespace
 
-void findPairs(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method) {
-  pairs.clear();
-  if (method == PairMethod::kBvh) return bvhPairs(b, pairs);
+struct PairFinder::Scratch {
+  std::vector<std::int16_t> y0, y1, z0, z1;  // the cells each box covers
+  std::vector<std::uint32_t> begin, cursor;  // per cell, into entries
+  std::vector<Entry> entries;                // cell by cell, each in id order
+  std::vector<CellBuffer> buffers;           // one per thread
+  std::vector<std::vector<Pair>> rowPairs;   // one per grid row, joined in row order
+
+  template <class Sweep>
+  void run(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method, Sweep sweep);
+};
+
+template <class Sweep>
+void PairFinder::Scratch::run(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method,
+                              Sweep sweep) {
   const Grid g = chooseGrid(b, method);
-  const CellStreams s = fillCells(b, g);
-  const bool ref = referencePathActive();
+  const std::size_t n = b.size(), cells = std::size_t(g.ny) * g.nz;
+  y0.resize(n), y1.resize(n), z0.resize(n), z1.resize(n);
+  begin.assign(cells + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    y0[i] = std::int16_t(g.cellY(b.minY()[i])), y1[i] = std::int16_t(g.cellY(b.maxY()[i]));
+    z0[i] = std::int16_t(g.cellZ(b.minZ()[i])), z1[i] = std::int16_t(g.cellZ(b.maxZ()[i]));
+    for (int cy = y0[i]; cy <= y1[i]; ++cy)
+      for (int cz = z0[i]; cz <= z1[i]; ++cz) ++begin[std::size_t(cy) * g.nz + cz + 1];
+  }
+  for (std::size_t c = 0; c < cells; ++c) begin[c + 1] += begin[c];
+  entries.resize(begin[cells]);
+  cursor.assign(begin.begin(), begin.end() - 1);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Entry e{b.minX()[i], b.maxX()[i], b.minY()[i], b.maxY()[i], b.minZ()[i], b.maxZ()[i],
+            i,           y0[i],       z0[i]};
+    for (int cy = y0[i]; cy <= y1[i]; ++cy)
+      for (int cz = z0[i]; cz <= z1[i]; ++cz) entries[cursor[std::size_t(cy) * g.nz + cz]++] = e;
+  }
+  // Rows are independent; each fills its own list, so the joined order is the same whatever
+  // the number of threads.
+  rowPairs.resize(g.ny);
+  buffers.resize(std::size_t(omp_get_max_threads()));
+#pragma omp parallel for schedule(dynamic)
   for (int cy = 0; cy < g.ny; ++cy) {
+    CellBuffer& buffer = buffers[std::size_t(omp_get_thread_num())];
+    rowPairs[cy].clear();
     for (int cz = 0; cz < g.nz; ++cz) {
-      simd::SweepCell cell = s.cell(g, cy, cz);
-      if (ref)
-        reference::sweepCellScalar(cell, pairs);
-      else
-        simd::sweepCell(cell, pairs);
+      std::size_t c = std::size_t(cy) * g.nz + cz;
+      sweep(buffer.load(entries.data() + begin[c], begin[c + 1] - begin[c], cy, cz),
+            rowPairs[cy]);
     }
   }
+  pairs.clear();
+  for (const std::vector<Pair>& row : rowPairs) pairs.insert(pairs.end(), row.begin(), row.end());
+}
+
+PairFinder::PairFinder() : scratch_(std::make_unique<Scratch>()) {}
+PairFinder::~PairFinder() = default;
+PairFinder::PairFinder(PairFinder&&) noexcept = default;
+PairFinder& PairFinder::operator=(PairFinder&&) noexcept = default;
+
+void PairFinder::find(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method) {
+  if (method == PairMethod::kBvh) {
+    pairs.clear();
+    return bvhPairs(b, pairs);
+  }
+  if (referencePathActive()) return scratch_->run(b, pairs, method, reference::sweepCellScalar);
+  scratch_->run(b, pairs, method, simd::sweepCell);
+}
+
+void findPairs(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method) {
+  PairFinder().find(b, pairs, method);
+}
+
+void detail::findPairsAutovec(PairFinder& finder, const BoxStream& b, std::vector<Pair>& pairs) {
+  finder.scratch_->run(b, pairs, PairMethod::kGridSweep, simd::sweepCellAutovec);
 }
 
 std::uint64_t countOverlapsBrute(const BoxStream& boxes, std::span<const Aabb> queries) {

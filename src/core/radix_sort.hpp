@@ -16,24 +16,31 @@ inline std::uint32_t sortableBits(float f) {
   return u & 0x80000000u ? ~u : u | 0x80000000u;
 }
 
-// The permutation that sorts `keys` ascending, equal keys in index order.
-inline std::vector<std::uint32_t> sortedOrder(const float* keys, std::size_t n) {
-  constexpr int kBits = 11, kPasses = 3, kBuckets = 1 << kBits;
-  std::vector<std::uint32_t> bits(n), order(n), next(n);
-  std::vector<std::array<std::uint32_t, kBuckets>> counts(kPasses);
-  for (auto& c : counts) c.fill(0);
-  for (std::size_t i = 0; i < n; ++i) {
-    bits[i] = sortableBits(keys[i]);
-    order[i] = std::uint32_t(i);
-    for (int p = 0; p < kPasses; ++p) ++counts[p][(bits[i] >> (p * kBits)) & (kBuckets - 1)];
+// Sorts by float key, reusing its buffers from call to call.
+class RadixSorter {
+ public:
+  // The permutation that sorts `keys` ascending, equal keys in index order.
+  const std::vector<std::uint32_t>& sort(const float* keys, std::size_t n) {
+    constexpr int kBits = 11, kPasses = 3, kBuckets = 1 << kBits;
+    bits_.resize(n), order_.resize(n), next_.resize(n);
+    std::array<std::array<std::uint32_t, kBuckets>, kPasses> counts{};
+    for (std::size_t i = 0; i < n; ++i) {
+      bits_[i] = sortableBits(keys[i]);
+      order_[i] = std::uint32_t(i);
+      for (int p = 0; p < kPasses; ++p) ++counts[p][(bits_[i] >> (p * kBits)) & (kBuckets - 1)];
+    }
+    for (int p = 0; p < kPasses; ++p) {
+      std::uint32_t sum = 0;
+      for (std::uint32_t& c : counts[p]) sum += std::exchange(c, sum);
+      for (std::uint32_t i : order_)
+        next_[counts[p][(bits_[i] >> (p * kBits)) & (kBuckets - 1)]++] = i;
+      order_.swap(next_);
+    }
+    return order_;
   }
-  for (int p = 0; p < kPasses; ++p) {
-    std::uint32_t sum = 0;
-    for (std::uint32_t& c : counts[p]) sum += std::exchange(c, sum);
-    for (std::uint32_t i : order) next[counts[p][(bits[i] >> (p * kBits)) & (kBuckets - 1)]++] = i;
-    order.swap(next);
-  }
-  return order;
-}
+
+ private:
+  std::vector<std::uint32_t> bits_, order_, next_;
+};
 
 }  // namespace simdphys

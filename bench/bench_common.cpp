@@ -1,0 +1,68 @@
+#include "bench_common.hpp"
+
+#include <map>
+#include <memory>
+
+namespace simdphys::bench {
+
+const scenes::AabbWorkload& aabbWorkload(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<scenes::AabbWorkload>> cache;
+  auto& w = cache[n];
+  if (!w) w = std::make_unique<scenes::AabbWorkload>(scenes::makeAabbWorkload(n));
+  return *w;
+}
+
+const scenes::AabbReference& aabbReference(std::size_t n) {
+  for (const scenes::AabbReference& r : scenes::kAabbReference)
+    if (r.boxes == n) return r;
+  throw Error("no W1 reference figures for N = " + std::to_string(n));
+}
+
+const scenes::CullWorkload& cullWorkload() {
+  static const scenes::CullWorkload w = scenes::makeCullWorkload();
+  return w;
+}
+
+namespace {
+std::string name(const std::string& task, const std::string& method, const std::string& path,
+                 std::size_t n) {
+  return task + "/" + method + "/" + path + "/" + std::to_string(n);
+}
+}  // namespace
+
+void registerPerPath(const std::string& task, const std::string& method, std::size_t n,
+                     const Body& body, bool withReference) {
+  for (const std::string& path : availablePaths()) {
+    if (path == "reference" && !withReference) continue;
+    benchmark::RegisterBenchmark(name(task, method, path, n).c_str(),
+                                 [body, path](benchmark::State& state) {
+                                   ScopedPath forced(path);
+                                   state.SetLabel(path);
+                                   body(state);
+                                 })
+        ->Unit(benchmark::kMillisecond);
+  }
+}
+
+void registerOnce(const std::string& task, const std::string& method, const std::string& label,
+                  std::size_t n, const Body& body) {
+  benchmark::RegisterBenchmark(name(task, method, label, n).c_str(),
+                               [body, label](benchmark::State& state) {
+                                 state.SetLabel(label);
+                                 body(state);
+                               })
+      ->Unit(benchmark::kMillisecond);
+}
+
+bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expected) {
+  state.counters["result"] = double(found);
+  state.counters["expected"] = double(expected);
+  state.counters["exact"] = found == expected ? 1 : 0;
+  if (found != expected)
+    state.SkipWithError(("result " + std::to_string(found) + " differs from the reference " +
+                         std::to_string(expected))
+                            .c_str());
+  return found == expected;
+}
+
+}  // namespace simdphys::bench

@@ -1,0 +1,44 @@
+// Shared by the benchmark suites: workloads generated once, registration once per path, and the
+// counters the report (bench/report.py) reads.
+//
+// Names are task/method/path/n: task is the workload (aabb_query, aabb_pairs, cull_spheres, ...),
+// method the algorithm (bvh, brute, grid, autovec, bullet_dbvt, ...), path the instruction set
+// the run was forced to (a SIMD target, "reference", or "peer" for other engines).
+// Counters: items_per_second (the workload's unit: box tests, boxes, objects), result (the count
+// found), exact (1 when the result equals the reference figure of WORKLOADS.md), and where
+// relevant checksum, bytes_per_second and error (differences from the double reference).
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <functional>
+#include <string>
+
+#include "simdphys/core.hpp"
+#include "workloads.hpp"
+
+namespace simdphys::bench {
+
+const scenes::AabbWorkload& aabbWorkload(std::size_t n);
+const scenes::AabbReference& aabbReference(std::size_t n);
+const scenes::CullWorkload& cullWorkload();
+
+using Body = std::function<void(benchmark::State&)>;
+
+// Registers `body` under task/method/<path>/n, running with the path forced, for every path
+// this machine has (the reference path too when `withReference`).
+void registerPerPath(const std::string& task, const std::string& method, std::size_t n,
+                     const Body& body, bool withReference = true);
+// Registers `body` once, under task/method/label/n: label is "peer" for another engine's run, or
+// "scalar" for code that has one path only (a tree build).
+void registerOnce(const std::string& task, const std::string& method, const std::string& label,
+                  std::size_t n, const Body& body);
+
+// Marks the run as failed if `found` differs from `expected`, else records both.
+bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expected);
+
+#ifdef SIMDPHYS_HAVE_BULLET
+void registerBulletBenchmarks();  // peers/bullet_bench.cpp
+#endif
+
+}  // namespace simdphys::bench

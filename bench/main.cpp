@@ -1,0 +1,38 @@
+// The benchmark runner: prints the active path and machine, registers every suite, runs.
+#include <omp.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "bench_common.hpp"
+
+namespace simdphys::bench {
+void registerAabbBenchmarks();
+void registerCullBenchmarks();
+void registerBandwidthBenchmarks();
+}  // namespace simdphys::bench
+
+int main(int argc, char** argv) {
+  using namespace simdphys;
+  // One thread unless asked otherwise: the figures are per core.
+  const char* threads = std::getenv("SIMDPHYS_BENCH_THREADS");
+  omp_set_num_threads(threads ? std::atoi(threads) : 1);
+  std::string paths;
+  for (const std::string& p : availablePaths()) paths += (paths.empty() ? "" : ",") + p;
+  std::printf("simdphys benchmarks: active path %s; paths on this machine: %s\n",
+              activePath().c_str(), paths.c_str());
+  benchmark::AddCustomContext("simdphys_active_path", activePath());
+  benchmark::AddCustomContext("simdphys_paths", paths);
+  benchmark::AddCustomContext("compiler", "GCC " __VERSION__);
+  benchmark::AddCustomContext("simdphys_threads", std::to_string(omp_get_max_threads()));
+  bench::registerAabbBenchmarks();
+  bench::registerCullBenchmarks();
+  bench::registerBandwidthBenchmarks();
+#ifdef SIMDPHYS_HAVE_BULLET
+  bench::registerBulletBenchmarks();
+#endif
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}
