@@ -2,6 +2,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace simdphys::bench {
 
@@ -28,30 +29,37 @@ std::string name(const std::string& task, const std::string& method, const std::
                  std::size_t n) {
   return task + "/" + method + "/" + path + "/" + std::to_string(n);
 }
-}  // namespace
 
-void registerPerPath(const std::string& task, const std::string& method, std::size_t n,
-                     const Body& body, bool withReference) {
-  for (const std::string& path : availablePaths()) {
-    if (path == "reference" && !withReference) continue;
-    benchmark::RegisterBenchmark(name(task, method, path, n).c_str(),
-                                 [body, path](benchmark::State& state) {
-                                   ScopedPath forced(path);
-                                   state.SetLabel(path);
-                                   body(state);
-                                 })
-        ->Unit(benchmark::kMillisecond);
-  }
-}
-
-void registerOnce(const std::string& task, const std::string& method, const std::string& label,
-                  std::size_t n, const Body& body) {
-  benchmark::RegisterBenchmark(name(task, method, label, n).c_str(),
-                               [body, label](benchmark::State& state) {
+// Registers a run labelled `label`, with `path` forced while it runs unless `path` is empty.
+void registerRun(const std::string& runName, const std::string& label, const std::string& path,
+                 const Body& body) {
+  benchmark::RegisterBenchmark(runName.c_str(),
+                               [body, label, path](benchmark::State& state) {
+                                 std::optional<ScopedPath> forced;
+                                 if (!path.empty()) forced.emplace(path);
                                  state.SetLabel(label);
                                  body(state);
                                })
       ->Unit(benchmark::kMillisecond);
+}
+}  // namespace
+
+void registerPerPath(const std::string& task, const std::string& method, std::size_t n,
+                     const Body& body, bool withReference) {
+  for (const std::string& path : availablePaths())
+    if (path != "reference" || withReference)
+      registerRun(name(task, method, path, n), path, path, body);
+}
+
+void registerBestPath(const std::string& task, const std::string& method, std::size_t n,
+                      const Body& body) {
+  const std::string best = availablePaths().front();
+  registerRun(name(task, method, best, n), best, best, body);
+}
+
+void registerOnce(const std::string& task, const std::string& method, const std::string& label,
+                  std::size_t n, const Body& body) {
+  registerRun(name(task, method, label, n), label, "", body);
 }
 
 bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expected) {

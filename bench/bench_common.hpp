@@ -29,6 +29,9 @@ using Body = std::function<void(benchmark::State&)>;
 // this machine has (the reference path too when `withReference`).
 void registerPerPath(const std::string& task, const std::string& method, std::size_t n,
                      const Body& body, bool withReference = true);
+// Registers `body` on the best SIMD path only: for comparing algorithms rather than paths.
+void registerBestPath(const std::string& task, const std::string& method, std::size_t n,
+                      const Body& body);
 // Registers `body` once, under task/method/label/n: label is "peer" for another engine's run, or
 // "scalar" for code that has one path only (a tree build).
 void registerOnce(const std::string& task, const std::string& method, const std::string& label,

@@ -3,6 +3,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <string>
 
 #include "bench_common.hpp"
 
@@ -11,6 +13,16 @@ void registerAabbBenchmarks();
 void registerCullBenchmarks();
 void registerBandwidthBenchmarks();
 }  // namespace simdphys::bench
+
+namespace {
+// The CPU's name, for the report ("model name" of /proc/cpuinfo on Linux).
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace simdphys;
@@ -24,6 +36,8 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("simdphys_active_path", activePath());
   benchmark::AddCustomContext("simdphys_paths", paths);
   benchmark::AddCustomContext("compiler", "GCC " __VERSION__);
+  benchmark::AddCustomContext("cpu_model", cpuModel());
+  benchmark::AddCustomContext("simdphys_build_type", SIMDPHYS_BUILD_TYPE);
   benchmark::AddCustomContext("simdphys_threads", std::to_string(omp_get_max_threads()));
   bench::registerAabbBenchmarks();
   bench::registerCullBenchmarks();

@@ -1,7 +1,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS simdphys simdphys_warnings simdphys_exact_fp EXPORT simdphysTargets
+install(TARGETS simdphys EXPORT simdphysTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/simdphys DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
