@@ -80,9 +80,8 @@ void registerPairs(std::size_t n) {
       {"grid", PairMethod::kGridSweep}, {"sweep", PairMethod::kSweep}, {"bvh", PairMethod::kBvh}};
   for (auto [name, method] : methods) {
     auto body = [n, m = method](benchmark::State& state) {
-      pairsBody(state, n, [m](PairFinder& f, const BoxStream& b, std::vector<Pair>& p) {
-        f.find(b, p, m);
-      });
+      pairsBody(state, n,
+                [m](PairFinder& f, const BoxStream& b, std::vector<Pair>& p) { f.find(b, p, m); });
     };
     // The default method on every path; the others, for choosing it, on the best path.
     if (method == PairMethod::kGridSweep)

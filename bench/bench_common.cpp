@@ -33,14 +33,12 @@ std::string name(const std::string& task, const std::string& method, const std::
 // Registers a run labelled `label`, with `path` forced while it runs unless `path` is empty.
 void registerRun(const std::string& runName, const std::string& label, const std::string& path,
                  const Body& body) {
-  benchmark::RegisterBenchmark(runName.c_str(),
-                               [body, label, path](benchmark::State& state) {
-                                 std::optional<ScopedPath> forced;
-                                 if (!path.empty()) forced.emplace(path);
-                                 state.SetLabel(label);
-                                 body(state);
-                               })
-      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(runName.c_str(), [body, label, path](benchmark::State& state) {
+    std::optional<ScopedPath> forced;
+    if (!path.empty()) forced.emplace(path);
+    state.SetLabel(label);
+    body(state);
+  })->Unit(benchmark::kMillisecond);
 }
 }  // namespace
 

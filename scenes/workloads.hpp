@@ -17,7 +17,7 @@ class Random {
  public:
   explicit Random(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next();
-  float u01();                     // [0, 1), 24 bits
+  float u01();                      // [0, 1), 24 bits
   float uniform(float a, float b);  // a + (b - a) * u01(), rounded before the addition
   Vec3f unitDirection();            // rejection-sampled in the unit ball, then normalised
 

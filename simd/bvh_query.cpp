@@ -1,6 +1,7 @@
 // Box queries against the wide BVH: one SIMD comparison per row tests all 8 children of a node.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "simd/bvh_query.cpp"
+#include <hwy/cache_control.h>
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
@@ -12,46 +13,94 @@ namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+#include "simd/compress-inl.hpp"
 #include "src/bvh/traverse-inl.hpp"
 
-// The slots of a node whose box overlaps the query (closed test), as a bit mask.
-class OverlapTest {
+// Expands a node for a box query without a branch per slot: one comparison per row gives the
+// slots that overlap; of those, child nodes are compressed onto the stack and leaves handed to
+// the sink as a vector of references with a mask.
+template <class Sink>
+class OverlapExpander {
  public:
-  explicit OverlapTest(const Box& q)
-      : minX_(hn::Set(d_, q.minX)), minY_(hn::Set(d_, q.minY)), minZ_(hn::Set(d_, q.minZ)),
-        maxX_(hn::Set(d_, q.maxX)), maxY_(hn::Set(d_, q.maxY)), maxZ_(hn::Set(d_, q.maxZ)) {}
+  OverlapExpander(const BvhNode* nodes, const Box& q, Sink& sink)
+      : nodes_(nodes),
+        sink_(sink),
+        minX_(hn::Set(d_, q.minX)),
+        minY_(hn::Set(d_, q.minY)),
+        minZ_(hn::Set(d_, q.minZ)),
+        maxX_(hn::Set(d_, q.maxX)),
+        maxY_(hn::Set(d_, q.maxY)),
+        maxZ_(hn::Set(d_, q.maxZ)) {}
 
-  std::uint32_t operator()(const BvhNode& n) const {
-    std::uint32_t mask = 0;
+  int operator()(const BvhNode& n, std::uint32_t* stack, int top) {
     for (std::size_t h = 0; h < BvhNode::kWidth; h += hn::Lanes(d_)) {
-      auto x = hn::And(hn::Le(hn::Load(d_, n.minX + h), maxX_), hn::Le(minX_, hn::Load(d_, n.maxX + h)));
-      auto y = hn::And(hn::Le(hn::Load(d_, n.minY + h), maxY_), hn::Le(minY_, hn::Load(d_, n.maxY + h)));
-      auto z = hn::And(hn::Le(hn::Load(d_, n.minZ + h), maxZ_), hn::Le(minZ_, hn::Load(d_, n.maxZ + h)));
-      std::uint8_t bits[8] = {};
-      hn::StoreMaskBits(d_, hn::And(x, hn::And(y, z)), bits);
-      mask |= std::uint32_t(bits[0]) << h;
+      auto x =
+          hn::And(hn::Le(hn::Load(d_, n.minX + h), maxX_), hn::Le(minX_, hn::Load(d_, n.maxX + h)));
+      auto y =
+          hn::And(hn::Le(hn::Load(d_, n.minY + h), maxY_), hn::Le(minY_, hn::Load(d_, n.maxY + h)));
+      auto z =
+          hn::And(hn::Le(hn::Load(d_, n.minZ + h), maxZ_), hn::Le(minZ_, hn::Load(d_, n.maxZ + h)));
+      auto hit = hn::RebindMask(du_, hn::And(x, hn::And(y, z)));
+      if (hn::AllFalse(du_, hit)) continue;
+      const auto child = hn::Load(du_, n.child + h);
+      const auto leaf = hn::RebindMask(du_, hn::Lt(hn::BitCast(di_, child), hn::Zero(di_)));
+      const int pushed = top;
+      top += int(compressStore32(du_, child, hn::AndNot(leaf, hit), stack + top));
+      // Large trees miss the cache: fetch the children now, while the siblings are tested.
+      for (int s = pushed; s < top; ++s) prefetchNode(nodes_ + stack[s]);
+      sink_(du_, child, hn::And(leaf, hit));
     }
-    return mask;
+    return top;
   }
 
  private:
+  static void prefetchNode(const BvhNode* n) {
+    const char* p = reinterpret_cast<const char*>(n);
+    for (std::size_t line = 0; line < sizeof(BvhNode); line += 64) hwy::Prefetch(p + line);
+  }
+
   using D = hn::CappedTag<float, BvhNode::kWidth>;
   static constexpr D d_{};
+  static constexpr hn::RebindToUnsigned<D> du_{};
+  static constexpr hn::RebindToSigned<D> di_{};
+  const BvhNode* nodes_;
+  Sink& sink_;
   hn::Vec<D> minX_, minY_, minZ_, maxX_, maxY_, maxZ_;
+};
+
+// Leaf sinks: count the leaves that pass, or collect their primitive ids.
+struct CountLeaves {
+  std::uint64_t total = 0;
+  template <class DU, class V, class M>
+  void operator()(DU du, V, M leaves) {
+    total += hn::CountTrue(du, leaves);
+  }
+};
+
+struct CollectLeaves {
+  std::vector<std::uint32_t>& out;
+  template <class DU, class V, class M>
+  void operator()(DU du, V child, M leaves) {
+    if (hn::AllFalse(du, leaves)) return;
+    std::size_t size = out.size();
+    out.resize(size + hn::Lanes(du));  // CompressStore writes a whole vector
+    auto id = hn::And(child, hn::Set(du, BvhNode::kFirstMask));
+    out.resize(size + compressStore32(du, id, leaves, out.data() + size));
+  }
 };
 
 std::uint64_t BvhCountOverlaps(const BvhNode* nodes, std::size_t nodeCount, const Box* queries,
                                std::size_t nQueries) {
-  std::uint64_t count = 0;
+  CountLeaves count;
   for (std::size_t q = 0; q < nQueries; ++q)
-    traverseBvh(nodes, nodeCount, OverlapTest(queries[q]), [&](std::uint32_t) { ++count; });
-  return count;
+    traverseBvh(nodes, nodeCount, OverlapExpander<CountLeaves>(nodes, queries[q], count));
+  return count.total;
 }
 
 void BvhQuery(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
               std::vector<std::uint32_t>& out) {
-  traverseBvh(nodes, nodeCount, OverlapTest(query),
-              [&](std::uint32_t leaf) { out.push_back(BvhNode::leafFirst(leaf)); });
+  CollectLeaves collect{out};
+  traverseBvh(nodes, nodeCount, OverlapExpander<CollectLeaves>(nodes, query, collect));
 }
 
 }  // namespace HWY_NAMESPACE

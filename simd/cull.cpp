@@ -13,7 +13,9 @@ namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// `visible(d, i, k)` gives the lanes that plane k keeps, for the vector at element i.
+#include "simd/compress-inl.hpp"
+
+// `visible(d, i)` gives the lanes of the vector at element i that all six planes keep.
 template <class Visible>
 std::size_t compact(std::size_t padded, std::uint32_t* out, Visible visible) {
   const hn::ScalableTag<float> d;
@@ -22,37 +24,43 @@ std::size_t compact(std::size_t padded, std::uint32_t* out, Visible visible) {
   auto index = hn::Iota(du, 0);
   std::size_t count = 0;
   for (std::size_t i = 0; i < padded; i += n) {
-    auto keep = visible(d, i, 0);
-    for (int k = 1; k < 6; ++k) keep = hn::And(keep, visible(d, i, k));
-    count += hn::CompressStore(index, hn::RebindMask(du, keep), du, out + count);
+    count += compressStore32(du, index, hn::RebindMask(du, visible(d, i)), out + count);
     index = hn::Add(index, hn::Set(du, static_cast<std::uint32_t>(n)));
   }
   return count;
 }
 
-template <class D>
-auto planeDistance(D d, const Planes& p, int k, hn::Vec<D> x, hn::Vec<D> y, hn::Vec<D> z) {
+// n.p + d, summed in the reference's order: ((nx x + ny y) + nz z) + d.
+template <class D, class V>
+V planeDistance(D d, const Planes& p, int k, V x, V y, V z) {
   auto dot = hn::Add(hn::Add(hn::Mul(hn::Set(d, p.nx[k]), x), hn::Mul(hn::Set(d, p.ny[k]), y)),
                      hn::Mul(hn::Set(d, p.nz[k]), z));
   return hn::Add(dot, hn::Set(d, p.d[k]));
 }
 
 std::size_t CullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* out) {
-  return compact(s.padded, out, [&](auto d, std::size_t i, int k) {
-    auto dist = planeDistance(d, p, k, hn::Load(d, s.x + i), hn::Load(d, s.y + i),
-                              hn::Load(d, s.z + i));
-    return hn::Ge(dist, hn::Neg(hn::Load(d, s.r + i)));
+  return compact(s.padded, out, [&](auto d, std::size_t i) {
+    const auto x = hn::Load(d, s.x + i), y = hn::Load(d, s.y + i), z = hn::Load(d, s.z + i);
+    const auto negR = hn::Neg(hn::Load(d, s.r + i));
+    auto keep = hn::Ge(planeDistance(d, p, 0, x, y, z), negR);
+    for (int k = 1; k < 6; ++k) keep = hn::And(keep, hn::Ge(planeDistance(d, p, k, x, y, z), negR));
+    return keep;
   });
 }
 
 std::size_t CullBounds(const Planes& p, const BoundsView& b, std::uint32_t* out) {
-  return compact(b.padded, out, [&](auto d, std::size_t i, int k) {
-    auto dist = planeDistance(d, p, k, hn::Load(d, b.cx + i), hn::Load(d, b.cy + i),
-                              hn::Load(d, b.cz + i));
-    auto reach = hn::Add(hn::Add(hn::Mul(hn::Set(d, std::abs(p.nx[k])), hn::Load(d, b.ex + i)),
-                                 hn::Mul(hn::Set(d, std::abs(p.ny[k])), hn::Load(d, b.ey + i))),
-                         hn::Mul(hn::Set(d, std::abs(p.nz[k])), hn::Load(d, b.ez + i)));
-    return hn::Ge(hn::Add(dist, reach), hn::Zero(d));
+  return compact(b.padded, out, [&](auto d, std::size_t i) {
+    const auto x = hn::Load(d, b.cx + i), y = hn::Load(d, b.cy + i), z = hn::Load(d, b.cz + i);
+    const auto ex = hn::Load(d, b.ex + i), ey = hn::Load(d, b.ey + i), ez = hn::Load(d, b.ez + i);
+    auto visible = [&](int k) {
+      auto reach = hn::Add(hn::Add(hn::Mul(hn::Set(d, std::abs(p.nx[k])), ex),
+                                   hn::Mul(hn::Set(d, std::abs(p.ny[k])), ey)),
+                           hn::Mul(hn::Set(d, std::abs(p.nz[k])), ez));
+      return hn::Ge(hn::Add(planeDistance(d, p, k, x, y, z), reach), hn::Zero(d));
+    };
+    auto keep = visible(0);
+    for (int k = 1; k < 6; ++k) keep = hn::And(keep, visible(k));
+    return keep;
   });
 }
 
@@ -75,8 +83,8 @@ std::size_t CullBoundsAutovec(const Planes& p, const BoundsView& b, std::uint32_
     bool visible = true;
     for (int k = 0; k < 6; ++k) {
       float dist = p.nx[k] * b.cx[i] + p.ny[k] * b.cy[i] + p.nz[k] * b.cz[i] + p.d[k];
-      float reach = std::abs(p.nx[k]) * b.ex[i] + std::abs(p.ny[k]) * b.ey[i] +
-                    std::abs(p.nz[k]) * b.ez[i];
+      float reach =
+          std::abs(p.nx[k]) * b.ex[i] + std::abs(p.ny[k]) * b.ey[i] + std::abs(p.nz[k]) * b.ez[i];
       visible &= dist + reach >= 0.0f;
     }
     out[count] = static_cast<std::uint32_t>(i);

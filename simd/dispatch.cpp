@@ -15,8 +15,8 @@ struct Target {
 
 // Best first, as Highway orders its bits (lower bit = better target).
 constexpr Target kTargets[] = {
-    {HWY_AVX3_DL, "avx512dl"}, {HWY_AVX3, "avx512"}, {HWY_AVX2, "avx2"},
-    {HWY_SSE4, "sse4"},        {HWY_SSSE3, "ssse3"}, {HWY_EMU128, "emu128"},
+    {HWY_AVX3_DL, "avx512dl"},  {HWY_AVX3, "avx512"}, {HWY_AVX2, "avx2"},
+    {HWY_SSE4, "sse4"},         {HWY_SSSE3, "ssse3"}, {HWY_EMU128, "emu128"},
     {HWY_SCALAR, "hwy_scalar"},
 };
 

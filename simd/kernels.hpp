@@ -4,6 +4,7 @@
 // read whole vectors up to `padded` and rely on the padding value to produce no result.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -22,6 +23,16 @@ namespace simdphys::simd {
 std::vector<std::string> supportedTargets();
 // Makes the named target the one HWY_DYNAMIC_DISPATCH calls. Returns false if unsupported.
 bool selectTarget(const std::string& name);
+
+// For compress-inl.hpp: entry m lists, a nibble per lane from the lowest, the indices of the
+// set bits of m (the lanes a mask of 8 lanes keeps).
+inline constexpr auto kCompressNibbles = [] {
+  std::array<std::uint32_t, 256> table{};
+  for (unsigned m = 0; m < 256; ++m)
+    for (unsigned lane = 0, k = 0; lane < 8; ++lane)
+      if (m >> lane & 1) table[m] |= lane << (4 * k++);
+  return table;
+}();
 
 // ---- views -----------------------------------------------------------------------------------
 // Boxes as min/max SoA. Padding boxes are empty (min = +inf, max = -inf).

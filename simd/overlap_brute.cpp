@@ -34,9 +34,12 @@ std::uint64_t CountOverlapsBrute(const BoxesView& b, const Box* queries, std::si
     // Counts accumulate per lane (a true mask lane is -1) and are reduced once per block.
     auto counts = hn::Zero(di);
     for (std::size_t i = begin; i < end; i += hn::Lanes(d)) {
-      auto x = hn::And(hn::Le(hn::Load(d, b.minX + i), qMaxX), hn::Le(qMinX, hn::Load(d, b.maxX + i)));
-      auto y = hn::And(hn::Le(hn::Load(d, b.minY + i), qMaxY), hn::Le(qMinY, hn::Load(d, b.maxY + i)));
-      auto z = hn::And(hn::Le(hn::Load(d, b.minZ + i), qMaxZ), hn::Le(qMinZ, hn::Load(d, b.maxZ + i)));
+      auto x =
+          hn::And(hn::Le(hn::Load(d, b.minX + i), qMaxX), hn::Le(qMinX, hn::Load(d, b.maxX + i)));
+      auto y =
+          hn::And(hn::Le(hn::Load(d, b.minY + i), qMaxY), hn::Le(qMinY, hn::Load(d, b.maxY + i)));
+      auto z =
+          hn::And(hn::Le(hn::Load(d, b.minZ + i), qMaxZ), hn::Le(qMinZ, hn::Load(d, b.maxZ + i)));
       counts = hn::Sub(counts, hn::VecFromMask(di, hn::RebindMask(di, hn::And(x, hn::And(y, z)))));
     }
     return std::uint64_t(hn::GetLane(hn::SumOfLanes(di, counts)));

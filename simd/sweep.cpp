@@ -28,8 +28,10 @@ void SweepCell(const simd::SweepCell& c, std::vector<Pair>& out) {
     for (std::size_t j = i + 1; j < c.count; j += lanes) {
       auto inX = hn::Le(hn::LoadU(d, c.minX + j), maxX);
       if (hn::AllFalse(d, inX)) break;
-      auto y = hn::And(hn::Le(hn::LoadU(d, c.minY + j), maxY), hn::Le(minY, hn::LoadU(d, c.maxY + j)));
-      auto z = hn::And(hn::Le(hn::LoadU(d, c.minZ + j), maxZ), hn::Le(minZ, hn::LoadU(d, c.maxZ + j)));
+      auto y =
+          hn::And(hn::Le(hn::LoadU(d, c.minY + j), maxY), hn::Le(minY, hn::LoadU(d, c.maxY + j)));
+      auto z =
+          hn::And(hn::Le(hn::LoadU(d, c.minZ + j), maxZ), hn::Le(minZ, hn::LoadU(d, c.maxZ + j)));
       auto hit = hn::And(inX, hn::And(y, z));
       if (hn::AllFalse(d, hit)) continue;
       std::uint8_t bytes[8] = {};

@@ -19,8 +19,8 @@ std::vector<std::uint32_t> referenceCull(const Frustum& f, const SphereStream& s
 }
 std::vector<std::uint32_t> referenceCull(const Frustum& f, const BoundsStream& b) {
   std::vector<std::uint32_t> v;
-  reference::cullBoxes(f, b.cx().view(), b.cy().view(), b.cz().view(), b.ex().view(),
-                       b.ey().view(), b.ez().view(), v);
+  reference::cullBoxes(f, b.cx().view(), b.cy().view(), b.cz().view(), b.ex().view(), b.ey().view(),
+                       b.ez().view(), v);
   return v;
 }
 

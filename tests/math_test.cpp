@@ -10,6 +10,7 @@
 #include <concepts>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -68,6 +69,8 @@ struct ScalarName {
 using Scalars = ::testing::Types<float, double>;
 
 template <class T>
+class Matrices : public ::testing::Test {};
+template <class T>
 class Rotations : public ::testing::Test {};
 template <class T>
 class Transforms : public ::testing::Test {};
@@ -79,6 +82,7 @@ template <class T>
 class Vectors : public ::testing::Test {};
 template <class T>
 class Compare : public ::testing::Test {};
+TYPED_TEST_SUITE(Matrices, Scalars, ScalarName);
 TYPED_TEST_SUITE(Rotations, Scalars, ScalarName);
 TYPED_TEST_SUITE(Transforms, Scalars, ScalarName);
 TYPED_TEST_SUITE(Camera, Scalars, ScalarName);
@@ -104,6 +108,195 @@ TEST(Aliases, AreEigenTypesInColumnMajorStorage) {
   m(0, 3) = 5;
   EXPECT_EQ(m.data()[12], 5.0f);
   EXPECT_EQ(transformPoint(m, Vec3f(1, 2, 3)), Vec3f(6, 2, 3));  // exact: 1 + 5
+}
+
+// ---------------------------------------------------------------------------------------------
+// Minors, cofactors and the adjugate
+
+// Draws count N x N matrices with entries uniform in [-1, 1] plus `diagonal` on the diagonal,
+// from a fixed seed; drawn in double and rounded, so float and double see the same matrices.
+template <class T, int N>
+std::vector<Eigen::Matrix<T, N, N>> randomMatrices(int count, double diagonal = 0) {
+  std::mt19937 rng(20240 + N);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Eigen::Matrix<T, N, N>> out(count);
+  for (auto& m : out) {
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) m(i, j) = T(u(rng) + (i == j ? diagonal : 0));
+  }
+  return out;
+}
+
+constexpr int factorial(int n) { return n <= 1 ? 1 : n * factorial(n - 1); }
+
+TYPED_TEST(Matrices, HandWorked3x3) {
+  using T = TypeParam;
+  Mat3<T> m;
+  m << 3, 0, 2,  //
+      2, 0, -2,  //
+      0, 1, 1;
+  // Minor (i, j): delete row i and column j, take the 2x2 determinant |a b; c d| = ad - bc.
+  //   M00 = |0 -2; 1  1| = 0 + 2  =   2   M01 = |2 -2; 0  1| = 2 - 0 = 2   M02 = |2 0; 0 1| = 2
+  //   M10 = |0  2; 1  1| = 0 - 2  =  -2   M11 = |3  2; 0  1| = 3 - 0 = 3   M12 = |3 0; 0 1| = 3
+  //   M20 = |0  2; 0 -2| = 0 - 0  =   0   M21 = |3  2; 2 -2| = -6 - 4 = -10 M22 = |3 0; 2 0| = 0
+  // Cofactors flip the sign where i + j is odd (01, 10, 12, 21, all non-zero here, so every
+  // flip is checked): C = [2 -2 2; 2 3 -3; 0 10 0]. The adjugate is C transposed (m is not
+  // symmetric, so the transpose is checked too): [2 2 0; -2 3 10; 2 -3 0]. det m, along row 0:
+  // 3*2 + 0*(-2) + 2*2 = 10. adj * m: row 0 of adj, (2 2 0), times column 0 of m, (3 2 0), is
+  // 10; times column 2, (2 -2 1), is 4 - 4 = 0; and so on: 10 I.
+  // All values are small integers made by products and differences of small integers: exact in
+  // float and double, so compared with ==.
+  Mat3<T> minors, cofactors, adj;
+  minors << 2, 2, 2, -2, 3, 3, 0, -10, 0;
+  cofactors << 2, -2, 2, 2, 3, -3, 0, 10, 0;
+  adj << 2, 2, 0, -2, 3, 10, 2, -3, 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_EQ(matrixMinor(m, i, j), minors(i, j)) << "row " << i << " col " << j;
+      EXPECT_EQ(cofactor(m, i, j), cofactors(i, j)) << "row " << i << " col " << j;
+    }
+  }
+  EXPECT_EQ(cofactorMatrix(m), cofactors);
+  EXPECT_EQ(adjugate(m), adj);
+  EXPECT_EQ(m.determinant(), T(10));
+  EXPECT_EQ(Mat3<T>(adjugate(m) * m), Mat3<T>(10 * Mat3<T>::Identity()));
+  // Any Eigen expression is accepted: the transpose's adjugate is the adjugate's transpose.
+  EXPECT_EQ(adjugate(m.transpose()), Mat3<T>(adj.transpose()));
+}
+
+TYPED_TEST(Matrices, HandWorked2x2And4x4) {
+  using T = TypeParam;
+  // 2x2 [a b; c d]: each minor is the one entry left, M = [d c; b a]; C = [d -c; -b a];
+  // adj = [d -b; -c a]. With a, b, c, d = 4, 7, 2, 6: det = 24 - 14 = 10.
+  Mat2<T> m2, adj2;
+  m2 << 4, 7, 2, 6;
+  adj2 << 6, -7, -2, 4;
+  EXPECT_EQ(matrixMinor(m2, 0, 0), T(6));
+  EXPECT_EQ(matrixMinor(m2, 0, 1), T(2));
+  EXPECT_EQ(cofactor(m2, 0, 1), T(-2));
+  EXPECT_EQ(cofactor(m2, 1, 0), T(-7));
+  EXPECT_EQ(adjugate(m2), adj2);
+  EXPECT_EQ(Mat2<T>(adjugate(m2) * m2), Mat2<T>(10 * Mat2<T>::Identity()));
+  // 4x4 upper triangular U (diagonal 1 2 3 4, ones above): det = 24. A minor that deletes row
+  // i and column i leaves a triangular matrix: M00 = 2*3*4 = 24, M33 = 1*2*3 = 6. Deleting row
+  // 2 and column 1 leaves [1 1 1; 0 1 1; 0 0 4], triangular: M21 = 4, so C21 = -4. Deleting
+  // row 3 and column 0 leaves [1 1 1; 2 1 1; 0 3 1]: 1(1 - 3) - 1(2 - 0) + 1(6 - 0) = 2, so
+  // C30 = -2. Cross-check with U^-1 by back substitution: column 3 solves U x = e3:
+  // x3 = 1/4, x2 = -x3/3 = -1/12, x1 = -(x2 + x3)/2 = -1/12, x0 = -(x1 + x2 + x3) = -1/12; and
+  // column 2: x2 = 1/3, x1 = -1/6. So adj(0, 3) = C30 = 24 * (-1/12) = -2 and
+  // adj(1, 2) = C21 = 24 * (-1/6) = -4. Small integers again: exact.
+  Mat4<T> u;
+  u << 1, 1, 1, 1,  //
+      0, 2, 1, 1,   //
+      0, 0, 3, 1,   //
+      0, 0, 0, 4;
+  EXPECT_EQ(matrixMinor(u, 0, 0), T(24));
+  EXPECT_EQ(matrixMinor(u, 3, 3), T(6));
+  EXPECT_EQ(matrixMinor(u, 2, 1), T(4));
+  EXPECT_EQ(cofactor(u, 2, 1), T(-4));
+  EXPECT_EQ(matrixMinor(u, 3, 0), T(2));
+  EXPECT_EQ(cofactor(u, 3, 0), T(-2));
+  EXPECT_EQ(adjugate(u)(0, 3), T(-2));
+  EXPECT_EQ(adjugate(u)(1, 2), T(-4));
+  EXPECT_EQ(Mat4<T>(adjugate(u) * u), Mat4<T>(24 * Mat4<T>::Identity()));
+}
+
+TYPED_TEST(Matrices, SingularMatricesHaveAnAdjugate) {
+  using T = TypeParam;
+  // [1 2 3; 4 5 6; 7 8 9] has det 0 (row 2 - row 1 = row 1 - row 0) and no inverse, but its
+  // cofactors exist: C00 = 45 - 48 = -3, C01 = -(36 - 42) = 6, C02 = 32 - 35 = -3,
+  // C10 = -(18 - 24) = 6, C11 = 9 - 21 = -12, C12 = -(8 - 14) = 6, C20 = 12 - 15 = -3,
+  // C21 = -(6 - 12) = 6, C22 = 5 - 8 = -3; C is symmetric so adj = C, and adj * m = 0 * I
+  // (row 0 of adj times column 0 of m: -3 + 24 - 21 = 0). Exact small integers.
+  Mat3<T> m, adj;
+  m << 1, 2, 3, 4, 5, 6, 7, 8, 9;
+  adj << -3, 6, -3, 6, -12, 6, -3, 6, -3;
+  EXPECT_EQ(adjugate(m), adj);
+  EXPECT_EQ(Mat3<T>(adjugate(m) * m), Mat3<T>::Zero());
+  EXPECT_EQ(Mat3<T>(m * adjugate(m)), Mat3<T>::Zero());
+}
+
+template <class T, int N>
+void checkAdjugateIdentity() {
+  // adj(M) M - det(M) I is zero exactly; computed, each entry of either side is a sum of n!
+  // products of n entries of size <= 1 (its Laplace expansion), and each product goes through
+  // at most 3n roundings of u = eps/2, so each side is off by at most (3n/2) n! eps and their
+  // difference by 3n n! eps. Allowed: 4 n n! eps (16, 72, 384 eps for n = 2, 3, 4; 4.6e-5 for
+  // a 4x4 in float). Independent of conditioning: this is a polynomial identity, not a solve.
+  // (Bounds for the worst case; over 1e5 such matrices the largest error seen is 6 eps.)
+  const double tol = 4 * N * factorial(N) * kEps<T>;
+  using M = Eigen::Matrix<T, N, N>;
+  for (const M& m : randomMatrices<T, N>(200)) {
+    const M expected = m.determinant() * M::Identity();
+    EXPECT_TRUE(closeTo(adjugate(m) * m, expected, tol)) << "m:\n" << m;
+    EXPECT_TRUE(closeTo(m * adjugate(m), expected, tol)) << "m:\n" << m;
+  }
+}
+
+TYPED_TEST(Matrices, AdjugateTimesMatrixIsDeterminantTimesIdentity) {
+  checkAdjugateIdentity<TypeParam, 2>();
+  checkAdjugateIdentity<TypeParam, 3>();
+  checkAdjugateIdentity<TypeParam, 4>();
+}
+
+template <class T, int N>
+void checkAdjugateInverse() {
+  // M = 2n I + R with |r| <= 1 is diagonally dominant: |diagonal| >= 2n - 1 against off-diagonal
+  // row sums <= n - 1, so |det M| >= n^n, the entries of M^-1 are <= 1/n, and the absolute terms
+  // of any k x k subdeterminant sum to at most (3n)^k (the product of absolute row sums). With at
+  // most 3n roundings of u = eps/2 per term, a cofactor is off by <= (3n/2) eps (3n)^(n-1),
+  // i.e. by (3/2) 3^(n-1) eps after dividing by det; det's relative error (3n/2) 3^n eps moves
+  // the quotient (<= 1/n) by (3/2) 3^n eps: about 2 * 3^n eps in all. Eigen inverts n <= 4 with
+  // the same closed-form cofactor formulas, so it is as far from the truth. Allowed:
+  // 4 * 3^n eps (36, 108, 324 eps; 3.9e-5 for a 4x4 in float). (Worst case; over 1e5 such
+  // matrices the largest difference seen is 0.62 eps.)
+  double power = 1;
+  for (int i = 0; i < N; ++i) power *= 3;
+  const double tol = 4 * power * kEps<T>;
+  using M = Eigen::Matrix<T, N, N>;
+  for (const M& m : randomMatrices<T, N>(200, 2 * N)) {
+    EXPECT_TRUE(closeTo(M(adjugate(m) / m.determinant()), M(m.inverse()), tol)) << "m:\n" << m;
+  }
+}
+
+TYPED_TEST(Matrices, AdjugateOverDeterminantIsTheInverse) {
+  checkAdjugateInverse<TypeParam, 2>();
+  checkAdjugateInverse<TypeParam, 3>();
+  checkAdjugateInverse<TypeParam, 4>();
+}
+
+template <class F>
+void expectError(F&& f, const std::string& fragment) {
+  try {
+    f();
+    FAIL() << "no error; expected one mentioning '" << fragment << "'";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TYPED_TEST(Matrices, RejectOutOfRangeRowOrColumn) {
+  using T = TypeParam;
+  const Mat2<T> m2 = Mat2<T>::Identity();
+  const Mat3<T> m3 = Mat3<T>::Identity();
+  const Mat4<T> m4 = Mat4<T>::Identity();
+  expectError([&] { (void)matrixMinor(m3, 3, 0); },
+              "matrixMinor: (row 3, col 0) is outside a 3x3 matrix");
+  expectError([&] { (void)cofactor(m3, 0, -1); }, "cofactor: (row 0, col -1) is outside a 3x3");
+  EXPECT_THROW((void)matrixMinor(m2, 2, 0), Error);
+  EXPECT_THROW((void)matrixMinor(m2, 0, 2), Error);
+  EXPECT_THROW((void)matrixMinor(m2, -1, 0), Error);
+  EXPECT_THROW((void)cofactor(m2, 1, 2), Error);
+  EXPECT_THROW((void)matrixMinor(m3, 0, 3), Error);
+  EXPECT_THROW((void)matrixMinor(m3, -1, 1), Error);
+  EXPECT_THROW((void)matrixMinor(m4, 4, 0), Error);
+  EXPECT_THROW((void)matrixMinor(m4, 0, 4), Error);
+  EXPECT_THROW((void)cofactor(m4, 4, 4), Error);
+  EXPECT_THROW((void)cofactor(m4, -1, 3), Error);
+  // The last valid index is accepted.
+  EXPECT_EQ(matrixMinor(m2, 1, 1), T(1));
+  EXPECT_EQ(matrixMinor(m3, 2, 2), T(1));
+  EXPECT_EQ(cofactor(m4, 3, 3), T(1));
 }
 
 // ---------------------------------------------------------------------------------------------

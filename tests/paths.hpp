@@ -24,6 +24,6 @@ class OnEveryPath : public ::testing::TestWithParam<std::string> {
 
 }  // namespace simdphys::test
 
-#define SIMDPHYS_ON_EVERY_PATH(Suite)                                                    \
+#define SIMDPHYS_ON_EVERY_PATH(Suite)                                                       \
   INSTANTIATE_TEST_SUITE_P(Paths, Suite, ::testing::ValuesIn(::simdphys::availablePaths()), \
                            [](const auto& p) { return p.param; })

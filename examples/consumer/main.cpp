@@ -14,6 +14,7 @@ int main() {
   spheres.push({Vec3f(0, 0, -10), 1.0f});
   std::vector<std::uint32_t> visible;
   cull(view, spheres, visible);
-  std::printf("path %s: %zu pairs, %zu visible\n", activePath().c_str(), pairs.size(), visible.size());
+  std::printf("path %s: %zu pairs, %zu visible\n", activePath().c_str(), pairs.size(),
+              visible.size());
   return pairs.size() == 99 && visible.size() == 1 ? 0 : 1;
 }

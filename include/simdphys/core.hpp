@@ -2,8 +2,8 @@
 // aligned, padded streams that every batch kernel reads.
 #pragma once
 
-#include <cstddef>
 #include <compare>
+#include <cstddef>
 #include <cstdint>
 #include <new>
 #include <span>
@@ -30,9 +30,9 @@ struct Pair {
 
 // ---------------------------------------------------------------------------------------------
 // Execution paths. "reference" is the scalar Eigen path; the others are the SIMD instruction
-// sets the kernels were compiled for ("hwy_scalar" or "emu128" for the baseline without SIMD, "sse4", "avx2", "avx512", "avx512dl"), as far as
-// this CPU supports them. The best one is chosen at start-up, or the one named by the
-// environment variable SIMDPHYS_ISA.
+// sets the kernels were compiled for ("hwy_scalar" or "emu128" for the baseline without SIMD,
+// "sse4", "avx2", "avx512", "avx512dl"), as far as this CPU supports them. The best one is chosen
+// at start-up, or the one named by the environment variable SIMDPHYS_ISA.
 
 // The paths this machine can run, best SIMD path first, "reference" last.
 std::vector<std::string> availablePaths();

@@ -1,5 +1,6 @@
-// simdphys math: the Eigen types the library speaks and the helpers Eigen lacks (rotations from
-// angles, Euler angles, transforms, view and projection matrices, picking, robust vector helpers).
+// simdphys math: the Eigen types the library speaks and the helpers Eigen lacks (minors,
+// cofactors and the adjugate, rotations from angles, Euler angles, transforms, view and
+// projection matrices, picking, robust vector helpers).
 // The conventions are fixed once in docs/conventions.md: right-handed, +y up, column vectors,
 // view looks down -z, clip depth in [0, 1], pixel (0,0) top-left with y down, radians.
 //
@@ -126,7 +127,96 @@ ColumnOf<DA> project(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>
   return d * (a.dot(d) / d.squaredNorm());
 }
 
+// A fixed-size square matrix of 2x2 to 4x4, as the minor and cofactor functions take.
+template <class D>
+using SquareOf = Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, D::ColsAtCompileTime>;
+
+template <class D>
+constexpr void requireSquare2To4() {
+  static_assert(D::RowsAtCompileTime == D::ColsAtCompileTime && D::RowsAtCompileTime >= 2 &&
+                    D::RowsAtCompileTime <= 4,
+                "a fixed-size 2x2, 3x3 or 4x4 matrix is expected");
+}
+
+template <int N>
+void requireIndex(Eigen::Index row, Eigen::Index col, const char* fn) {
+  if (row < 0 || row >= N || col < 0 || col >= N)
+    fail(fn, "(row " + str(row) + ", col " + str(col) + ") is outside a " + str(N) + "x" + str(N) +
+                 " matrix");
+}
+
+// Determinant of m without row r and column c; r and c are already checked. The submatrix is at
+// most 3x3, whose determinant Eigen writes out in closed form (no pivoting, no division), so
+// the result is a plain polynomial in the entries and exact for small integers.
+template <class T, int N>
+T minorUnchecked(const Eigen::Matrix<T, N, N>& m, Eigen::Index r, Eigen::Index c) {
+  if constexpr (N == 2) {
+    return m(1 - r, 1 - c);
+  } else {
+    Eigen::Matrix<T, N - 1, N - 1> sub;
+    for (Eigen::Index i = 0, si = 0; i < N; ++i) {
+      if (i == r) continue;
+      for (Eigen::Index j = 0, sj = 0; j < N; ++j) {
+        if (j == c) continue;
+        sub(si, sj++) = m(i, j);
+      }
+      ++si;
+    }
+    return sub.determinant();
+  }
+}
+
+template <class T, int N>
+T cofactorUnchecked(const Eigen::Matrix<T, N, N>& m, Eigen::Index r, Eigen::Index c) {
+  const T mi = minorUnchecked(m, r, c);
+  return (r + c) % 2 == 0 ? mi : -mi;
+}
+
 }  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// Minors, cofactors and the adjugate of fixed-size 2x2, 3x3 and 4x4 matrices (book chapter 2).
+// Eigen has the determinant and the inverse but not these. They need no division, so they stay
+// defined where the inverse is not: adjugate(m) * m == det(m) * I holds for singular m too, and
+// for a 3x3 A, cofactorMatrix(A) = det(A) A^-T maps cross products, (A u) x (A v) ==
+// cofactorMatrix(A) (u x v): the normal matrix of A up to scale. Rows and columns count from 0;
+// an out-of-range row or column throws Error.
+// (Not named `minor`: glibc's <sys/sysmacros.h> defines a macro of that name.)
+
+// Determinant of m with the given row and column removed.
+template <class D>
+typename D::Scalar matrixMinor(const Eigen::MatrixBase<D>& m, Eigen::Index row, Eigen::Index col) {
+  detail::requireSquare2To4<D>();
+  detail::requireIndex<D::RowsAtCompileTime>(row, col, "matrixMinor");
+  return detail::minorUnchecked(detail::SquareOf<D>(m), row, col);
+}
+
+// (-1)^(row + col) times the minor: the factor of m(row, col) in the Laplace expansion of the
+// determinant along that row or column.
+template <class D>
+typename D::Scalar cofactor(const Eigen::MatrixBase<D>& m, Eigen::Index row, Eigen::Index col) {
+  detail::requireSquare2To4<D>();
+  detail::requireIndex<D::RowsAtCompileTime>(row, col, "cofactor");
+  return detail::cofactorUnchecked(detail::SquareOf<D>(m), row, col);
+}
+
+// The matrix of all cofactors: element (i, j) is cofactor(m, i, j).
+template <class D>
+detail::SquareOf<D> cofactorMatrix(const Eigen::MatrixBase<D>& m) {
+  detail::requireSquare2To4<D>();
+  const detail::SquareOf<D> a = m;
+  detail::SquareOf<D> c;
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 0; j < a.cols(); ++j) c(i, j) = detail::cofactorUnchecked(a, i, j);
+  return c;
+}
+
+// The transpose of the cofactor matrix: adjugate(m) * m == m * adjugate(m) == det(m) * I, so
+// m^-1 = adjugate(m) / det(m) when det(m) != 0.
+template <class D>
+detail::SquareOf<D> adjugate(const Eigen::MatrixBase<D>& m) {
+  return cofactorMatrix(m).transpose();
+}
 
 // ---------------------------------------------------------------------------------------------
 // Rotations. Positive angles turn counter-clockwise when looking from the positive axis towards

@@ -6,8 +6,8 @@
 #include <omp.h>
 
 #include "../core/radix_sort.hpp"
-#include "pairs.hpp"
 #include "../views.hpp"
+#include "pairs.hpp"
 #include "simdphys/broadphase.hpp"
 #include "simdphys/bvh.hpp"
 
@@ -137,8 +137,8 @@ void PairFinder::Scratch::run(const BoxStream& b, std::vector<Pair>& pairs, Pair
   entries.resize(begin[cells]);
   cursor.assign(begin.begin(), begin.end() - 1);
   for (std::uint32_t i = 0; i < n; ++i) {
-    Entry e{b.minX()[i], b.maxX()[i], b.minY()[i], b.maxY()[i], b.minZ()[i], b.maxZ()[i],
-            i,           y0[i],       z0[i]};
+    Entry e{b.minX()[i], b.maxX()[i], b.minY()[i], b.maxY()[i], b.minZ()[i],
+            b.maxZ()[i], i,           y0[i],       z0[i]};
     for (int cy = y0[i]; cy <= y1[i]; ++cy)
       for (int cz = z0[i]; cz <= z1[i]; ++cz) entries[cursor[std::size_t(cy) * g.nz + cz]++] = e;
   }
@@ -152,8 +152,7 @@ void PairFinder::Scratch::run(const BoxStream& b, std::vector<Pair>& pairs, Pair
     rowPairs[cy].clear();
     for (int cz = 0; cz < g.nz; ++cz) {
       std::size_t c = std::size_t(cy) * g.nz + cz;
-      sweep(buffer.load(entries.data() + begin[c], begin[c + 1] - begin[c], cy, cz),
-            rowPairs[cy]);
+      sweep(buffer.load(entries.data() + begin[c], begin[c + 1] - begin[c], cy, cz), rowPairs[cy]);
     }
   }
   pairs.clear();

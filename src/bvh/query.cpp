@@ -1,4 +1,4 @@
-// Box queries: the scalar reference runs the same traversal with a slot-by-slot test.
+// Box queries: the scalar reference runs the same traversal, testing slot by slot.
 #include "../views.hpp"
 #include "simdphys/bvh.hpp"
 
@@ -6,14 +6,21 @@ namespace simdphys {
 namespace reference {
 #include "traverse-inl.hpp"
 
-inline std::uint32_t overlapMask(const BvhNode& n, const Aabb& q) {
-  std::uint32_t mask = 0;
-  for (int k = 0; k < BvhNode::kWidth; ++k) {
-    bool hit = n.minX[k] <= q.max.x() && q.min.x() <= n.maxX[k] && n.minY[k] <= q.max.y() &&
-               q.min.y() <= n.maxY[k] && n.minZ[k] <= q.max.z() && q.min.z() <= n.maxZ[k];
-    mask |= std::uint32_t(hit) << k;
-  }
-  return mask;
+// Expands a node for a box query: leaves that overlap go to `visit`, child nodes to the stack.
+template <class Visit>
+auto overlapExpander(const Aabb& q, Visit visit) {
+  return [&q, visit](const BvhNode& n, std::uint32_t* stack, int top) mutable {
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      bool hit = n.minX[k] <= q.max.x() && q.min.x() <= n.maxX[k] && n.minY[k] <= q.max.y() &&
+                 q.min.y() <= n.maxY[k] && n.minZ[k] <= q.max.z() && q.min.z() <= n.maxZ[k];
+      if (!hit) continue;
+      if (BvhNode::isLeaf(n.child[k]))
+        visit(BvhNode::leafFirst(n.child[k]));
+      else
+        stack[top++] = n.child[k];
+    }
+    return top;
+  };
 }
 }  // namespace reference
 
@@ -21,8 +28,8 @@ void Bvh::query(const Aabb& q, std::vector<std::uint32_t>& out) const {
   validate(q, "Bvh::query");
   if (!referencePathActive()) return simd::bvhQuery(nodes_.data(), nodes_.size(), box(q), out);
   reference::traverseBvh(
-      nodes_.data(), nodes_.size(), [&](const BvhNode& n) { return reference::overlapMask(n, q); },
-      [&](std::uint32_t leaf) { out.push_back(BvhNode::leafFirst(leaf)); });
+      nodes_.data(), nodes_.size(),
+      reference::overlapExpander(q, [&](std::uint32_t id) { out.push_back(id); }));
 }
 
 std::uint64_t Bvh::countOverlaps(std::span<const Aabb> queries) const {
@@ -36,10 +43,8 @@ std::uint64_t Bvh::countOverlaps(std::span<const Aabb> queries) const {
   }
   std::uint64_t count = 0;
   for (const Aabb& q : queries)
-    reference::traverseBvh(
-        nodes_.data(), nodes_.size(),
-        [&](const BvhNode& n) { return reference::overlapMask(n, q); },
-        [&](std::uint32_t) { ++count; });
+    reference::traverseBvh(nodes_.data(), nodes_.size(),
+                           reference::overlapExpander(q, [&](std::uint32_t) { ++count; }));
   return count;
 }
 

@@ -112,8 +112,7 @@ void BoundsStream::push(const Vec3f& center, const Vec3f& halfExtents) {
   requireFinite(center, where, "center");
   requireFinite(halfExtents, where, "halfExtents");
   for (int a = 0; a < 3; ++a)
-    if (!(halfExtents[a] >= 0))
-      throw Error(where + ": halfExtents." + kAxis[a] + " is negative");
+    if (!(halfExtents[a] >= 0)) throw Error(where + ": halfExtents." + kAxis[a] + " is negative");
   std::size_t i = size();
   resize(i + 1);
   cx_[i] = center.x(), cy_[i] = center.y(), cz_[i] = center.z();
