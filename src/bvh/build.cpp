@@ -14,6 +14,8 @@ constexpr int kBins = 16;
 // Below this many binary splits from the root, SAH is trusted; deeper, the build switches to
 // median splits, which bound the depth (and so the traversal stack) on adversarial inputs.
 constexpr int kMaxSahDepth = 40;
+// Ranges this small are split at the median: as good as SAH for a handful of boxes, and cheap.
+constexpr std::uint32_t kSmallRange = 16;
 
 struct Bounds {
   std::array<float, 3> lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
@@ -29,42 +31,50 @@ struct Bounds {
   }
 };
 
+// A primitive as the builder moves it: its box and id in 32 bytes, partitioned in place, so
+// every pass over a range reads memory in order (Embree's PrimRef).
+struct PrimRef {
+  std::array<float, 3> lo;
+  std::uint32_t id;
+  std::array<float, 3> hi;
+  float pad;
+  // Twice the centre: only the ordering matters, and halving would round.
+  float centroid(int a) const { return lo[a] + hi[a]; }
+};
+static_assert(sizeof(PrimRef) == 32);
+
 struct Range {
   std::uint32_t begin, end;
-  Bounds box;
-  int splits;  // binary splits from the root, for the depth limit
+  Bounds box;   // of the primitives
+  Bounds cbox;  // of their centroids
+  int splits;   // binary splits from the root, for the depth limit
   std::uint32_t count() const { return end - begin; }
 };
 
 class Builder {
  public:
-  Builder(const BoxStream& b, std::vector<BvhNode>& nodes) : boxes_(b), nodes_(nodes) {
-    std::size_t n = b.size();
-    ids_.resize(n);
-    centroid_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      ids_[i] = i;
-      // Twice the centre: only ordering matters, and the halving would round.
-      centroid_[i] = {b.minX()[i] + b.maxX()[i], b.minY()[i] + b.maxY()[i],
-                      b.minZ()[i] + b.maxZ()[i]};
-    }
+  Builder(const BoxStream& b, std::vector<BvhNode>& nodes) : nodes_(nodes), prims_(b.size()) {
+    for (std::uint32_t i = 0; i < prims_.size(); ++i)
+      prims_[i] = {{b.minX()[i], b.minY()[i], b.minZ()[i]}, i,
+                   {b.maxX()[i], b.maxY()[i], b.maxZ()[i]}, 0};
   }
 
   int build() {
-    Range all{0, std::uint32_t(ids_.size()), {}, 0};
-    for (std::uint32_t i = 0; i < all.end; ++i) all.box.grow(primBounds(i));
+    Range all{0, std::uint32_t(prims_.size()), {}, {}, 0};
+    for (const PrimRef& p : prims_) grow(all, p);
     return buildNode(all);
   }
 
  private:
-  Bounds primBounds(std::uint32_t id) const {
-    Bounds b;
-    b.lo = {boxes_.minX()[id], boxes_.minY()[id], boxes_.minZ()[id]};
-    b.hi = {boxes_.maxX()[id], boxes_.maxY()[id], boxes_.maxZ()[id]};
-    return b;
+  static void grow(Range& r, const PrimRef& p) {
+    for (int a = 0; a < 3; ++a) {
+      r.box.lo[a] = std::min(r.box.lo[a], p.lo[a]), r.box.hi[a] = std::max(r.box.hi[a], p.hi[a]);
+      float c = p.centroid(a);
+      r.cbox.lo[a] = std::min(r.cbox.lo[a], c), r.cbox.hi[a] = std::max(r.cbox.hi[a], c);
+    }
   }
 
-  // Returns the depth (in nodes) of the subtree it builds at nodes_.back().
+  // Returns the depth (in nodes) of the subtree it builds at index nodes_.size() on entry.
   int buildNode(const Range& range) {
     std::uint32_t index = std::uint32_t(nodes_.size());
     nodes_.emplace_back();
@@ -90,7 +100,7 @@ class Builder {
       node.child[k] = BvhNode::kEmpty;
       if (k >= used) continue;
       if (kids[k].count() == 1) {
-        node.child[k] = BvhNode::kLeaf | ids_[kids[k].begin];
+        node.child[k] = BvhNode::kLeaf | prims_[kids[k].begin].id;
       } else {
         node.child[k] = std::uint32_t(nodes_.size());
         depth = std::max(depth, 1 + buildNode(kids[k]));
@@ -101,37 +111,36 @@ class Builder {
   }
 
   std::pair<Range, Range> split(const Range& r) {
-    Bounds cb;
-    for (std::uint32_t i = r.begin; i < r.end; ++i) cb.grow(centroid_[ids_[i]]);
-    if (r.splits < kMaxSahDepth)
-      if (auto s = sahSplit(r, cb)) return *s;
-    return medianSplit(r, cb);
+    // Binning has a fixed cost (48 bins to clear and sweep) that small ranges do not repay.
+    if (r.splits < kMaxSahDepth && r.count() > kSmallRange)
+      if (auto s = sahSplit(r)) return *s;
+    return medianSplit(r);
   }
 
-  std::optional<std::pair<Range, Range>> sahSplit(const Range& r, const Bounds& cb) {
+  // Binned SAH over the three axes: one pass fills the bins, a second partitions the range.
+  std::optional<std::pair<Range, Range>> sahSplit(const Range& r) {
     struct Bin {
       Bounds box;
       std::uint32_t count = 0;
     };
-    float bestCost = kInf;
-    int bestAxis = -1, bestBin = 0;
     std::array<float, 3> scale{};
-    std::array<std::array<Bin, kBins>, 3> bins;
     for (int a = 0; a < 3; ++a) {
-      float extent = cb.hi[a] - cb.lo[a];
-      if (!(extent > 0)) continue;
-      scale[a] = kBins * (1 - 1e-6f) / extent;
+      float extent = r.cbox.hi[a] - r.cbox.lo[a];
+      if (extent > 0) scale[a] = kBins * (1 - 1e-6f) / extent;
     }
+    std::array<std::array<Bin, kBins>, 3> bins;
     for (std::uint32_t i = r.begin; i < r.end; ++i) {
-      std::uint32_t id = ids_[i];
-      Bounds pb = primBounds(id);
+      const PrimRef& p = prims_[i];
       for (int a = 0; a < 3; ++a) {
-        if (scale[a] == 0) continue;
-        Bin& bin = bins[a][binOf(centroid_[id][a], cb.lo[a], scale[a])];
-        bin.box.grow(pb);
+        Bin& bin = bins[a][binOf(p.centroid(a), r.cbox.lo[a], scale[a])];
+        for (int e = 0; e < 3; ++e)
+          bin.box.lo[e] = std::min(bin.box.lo[e], p.lo[e]),
+          bin.box.hi[e] = std::max(bin.box.hi[e], p.hi[e]);
         ++bin.count;
       }
     }
+    float bestCost = kInf;
+    int bestAxis = -1, bestBin = 0;
     for (int a = 0; a < 3; ++a) {
       if (scale[a] == 0) continue;
       // Right-to-left sweep stores the right cost of every split; left-to-right finds the best.
@@ -154,29 +163,38 @@ class Builder {
     }
     if (bestAxis < 0) return std::nullopt;
     const int a = bestAxis;
-    auto mid = std::partition(ids_.begin() + r.begin, ids_.begin() + r.end, [&](std::uint32_t id) {
-      return binOf(centroid_[id][a], cb.lo[a], scale[a]) < bestBin;
+    return partition(r, [&](const PrimRef& p) {
+      return binOf(p.centroid(a), r.cbox.lo[a], scale[a]) < bestBin;
     });
-    std::uint32_t m = std::uint32_t(mid - ids_.begin());
-    Range left{r.begin, m, {}, r.splits + 1}, right{m, r.end, {}, r.splits + 1};
-    for (int k = 0; k < kBins; ++k) (k < bestBin ? left : right).box.grow(bins[a][k].box);
-    return std::pair{left, right};
   }
 
   // Halves the range at the median centroid on the widest axis (ties by id): always balanced.
-  std::pair<Range, Range> medianSplit(const Range& r, const Bounds& cb) {
+  std::pair<Range, Range> medianSplit(const Range& r) {
     int a = 0;
     for (int k = 1; k < 3; ++k)
-      if (cb.hi[k] - cb.lo[k] > cb.hi[a] - cb.lo[a]) a = k;
+      if (r.cbox.hi[k] - r.cbox.lo[k] > r.cbox.hi[a] - r.cbox.lo[a]) a = k;
+    auto less = [a](const PrimRef& p, const PrimRef& q) {
+      return p.centroid(a) < q.centroid(a) || (p.centroid(a) == q.centroid(a) && p.id < q.id);
+    };
     std::uint32_t m = r.begin + r.count() / 2;
-    std::nth_element(ids_.begin() + r.begin, ids_.begin() + m, ids_.begin() + r.end,
-                     [&](std::uint32_t i, std::uint32_t j) {
-                       float ci = centroid_[i][a], cj = centroid_[j][a];
-                       return ci < cj || (ci == cj && i < j);
-                     });
-    Range left{r.begin, m, {}, r.splits + 1}, right{m, r.end, {}, r.splits + 1};
-    for (std::uint32_t i = left.begin; i < left.end; ++i) left.box.grow(primBounds(ids_[i]));
-    for (std::uint32_t i = right.begin; i < right.end; ++i) right.box.grow(primBounds(ids_[i]));
+    std::nth_element(prims_.begin() + r.begin, prims_.begin() + m, prims_.begin() + r.end, less);
+    const PrimRef pivot = prims_[m];
+    return partition(r, [&](const PrimRef& p) { return less(p, pivot); });
+  }
+
+  // Moves the primitives that go left before the others (Hoare's scheme) and measures both
+  // sides on the way.
+  template <class GoesLeft>
+  std::pair<Range, Range> partition(const Range& r, GoesLeft goesLeft) {
+    std::uint32_t i = r.begin, j = r.end;
+    Range left{r.begin, 0, {}, {}, r.splits + 1}, right{0, r.end, {}, {}, r.splits + 1};
+    while (true) {
+      while (i < j && goesLeft(prims_[i])) grow(left, prims_[i++]);
+      while (i < j && !goesLeft(prims_[j - 1])) grow(right, prims_[--j]);
+      if (i >= j) break;
+      std::swap(prims_[i], prims_[j - 1]);
+    }
+    left.end = right.begin = i;
     return {left, right};
   }
 
@@ -184,10 +202,8 @@ class Builder {
     return std::clamp(int((c - lo) * scale), 0, kBins - 1);
   }
 
-  const BoxStream& boxes_;
   std::vector<BvhNode>& nodes_;
-  std::vector<std::uint32_t> ids_;
-  std::vector<std::array<float, 3>> centroid_;
+  std::vector<PrimRef> prims_;
 };
 
 }  // namespace
@@ -200,6 +216,7 @@ void Bvh::build(const BoxStream& boxes) {
   primitives_ = boxes.size();
   depth_ = 0;
   if (primitives_ == 0) return;
+  nodes_.reserve(primitives_ / 3 + 1);  // a full tree has about n/7 nodes; SAH leaves slack
   depth_ = Builder(boxes, nodes_).build();
   // The median fallback below kMaxSahDepth splits bounds the depth; this guards that reasoning.
   if (depth_ > BvhNode::kMaxDepth)
