@@ -55,8 +55,8 @@ class Builder {
  public:
   Builder(const BoxStream& b, std::vector<BvhNode>& nodes) : nodes_(nodes), prims_(b.size()) {
     for (std::uint32_t i = 0; i < prims_.size(); ++i)
-      prims_[i] = {{b.minX()[i], b.minY()[i], b.minZ()[i]}, i,
-                   {b.maxX()[i], b.maxY()[i], b.maxZ()[i]}, 0};
+      prims_[i] = {
+          {b.minX()[i], b.minY()[i], b.minZ()[i]}, i, {b.maxX()[i], b.maxY()[i], b.maxZ()[i]}, 0};
   }
 
   int build() {

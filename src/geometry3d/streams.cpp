@@ -5,43 +5,12 @@
 
 namespace simdphys {
 namespace {
-
 constexpr char kAxis[] = {'x', 'y', 'z'};
 
 std::string at(std::string_view where, std::size_t i) {
   return std::string(where) + ": element " + std::to_string(i);
 }
-
-void requireFinite(const Vec3f& v, std::string_view where, const char* field) {
-  for (int a = 0; a < 3; ++a) {
-    if (std::isfinite(v[a])) continue;
-    std::ostringstream msg;
-    msg << where << ": " << field << '.' << kAxis[a] << " is " << v[a] << ", not finite";
-    throw Error(msg.str());
-  }
-}
-
 }  // namespace
-
-void validate(const Aabb& box, std::string_view where) {
-  requireFinite(box.min, where, "min");
-  requireFinite(box.max, where, "max");
-  for (int a = 0; a < 3; ++a) {
-    if (box.min[a] <= box.max[a]) continue;
-    std::ostringstream msg;
-    msg << where << ": min." << kAxis[a] << " (" << box.min[a] << ") > max." << kAxis[a] << " ("
-        << box.max[a] << ")";
-    throw Error(msg.str());
-  }
-}
-
-void validate(const Sphere& sphere, std::string_view where) {
-  requireFinite(sphere.center, where, "center");
-  if (std::isfinite(sphere.radius) && sphere.radius >= 0) return;
-  std::ostringstream msg;
-  msg << where << ": radius is " << sphere.radius << ", must be finite and >= 0";
-  throw Error(msg.str());
-}
 
 // ---- BoxStream ---------------------------------------------------------------------------------
 
@@ -109,8 +78,8 @@ void BoundsStream::reserve(std::size_t n) {
 
 void BoundsStream::push(const Vec3f& center, const Vec3f& halfExtents) {
   std::string where = at("BoundsStream::push", size());
-  requireFinite(center, where, "center");
-  requireFinite(halfExtents, where, "halfExtents");
+  detail::requireFiniteField(center, where, "center");
+  detail::requireFiniteField(halfExtents, where, "halfExtents");
   for (int a = 0; a < 3; ++a)
     if (!(halfExtents[a] >= 0)) throw Error(where + ": halfExtents." + kAxis[a] + " is negative");
   std::size_t i = size();
