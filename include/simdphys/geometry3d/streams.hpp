@@ -1,6 +1,6 @@
 // Streams of 3D primitives: one aligned, padded array per field (core.hpp). Each stream
 // validates what it is given and names the offending element; padding makes padded lanes inert
-// (an empty box, a sphere of radius -inf).
+// (an empty box, a sphere of radius -inf), so kernels can run over whole vectors.
 #pragma once
 
 #include <array>
@@ -11,78 +11,83 @@
 
 namespace simdphys {
 
-// Boxes as min/max corners, the layout of overlap tests.
-class BoxStream {
+// N float fields of one length, each with its own padding value: what every stream is made of.
+template <std::size_t N>
+class StreamSet {
  public:
-  std::size_t size() const { return minX_.size(); }
-  std::size_t padded() const { return minX_.padded(); }
-  void reserve(std::size_t n);
+  std::size_t size() const { return fields_[0].size(); }
+  std::size_t padded() const { return fields_[0].padded(); }
+  void reserve(std::size_t n) {
+    for (Stream<float>& f : fields_) f.reserve(n);
+  }
   void clear() { resize(0); }
+
+ protected:
+  explicit StreamSet(const std::array<float, N>& pads) {
+    for (std::size_t k = 0; k < N; ++k) fields_[k] = Stream<float>(pads[k]);
+  }
+  void resize(std::size_t n) {
+    for (Stream<float>& f : fields_) f.resize(n);
+  }
+  void store(std::size_t i, const std::array<float, N>& values) {
+    for (std::size_t k = 0; k < N; ++k) fields_[k][i] = values[k];
+  }
+  void append(const std::array<float, N>& values) {
+    resize(size() + 1);
+    store(size() - 1, values);
+  }
+  float value(std::size_t k, std::size_t i) const { return fields_[k][i]; }
+
+  std::array<Stream<float>, N> fields_;
+};
+
+inline constexpr float kPadInf = std::numeric_limits<float>::infinity();
+
+// Boxes as min/max corners, the layout of overlap tests. Padding: empty boxes (min = +inf,
+// max = -inf), which overlap nothing.
+class BoxStream : public StreamSet<6> {
+ public:
+  BoxStream() : StreamSet({kPadInf, kPadInf, kPadInf, -kPadInf, -kPadInf, -kPadInf}) {}
   void push(const Aabb& box);
   void set(std::size_t i, const Aabb& box);
   Aabb operator[](std::size_t i) const;
 
-  const Stream<float>& minX() const { return minX_; }
-  const Stream<float>& minY() const { return minY_; }
-  const Stream<float>& minZ() const { return minZ_; }
-  const Stream<float>& maxX() const { return maxX_; }
-  const Stream<float>& maxY() const { return maxY_; }
-  const Stream<float>& maxZ() const { return maxZ_; }
-
- private:
-  void resize(std::size_t n);
-  auto fields() { return std::array{&minX_, &minY_, &minZ_, &maxX_, &maxY_, &maxZ_}; }
-  Stream<float> minX_{kEmptyMin}, minY_{kEmptyMin}, minZ_{kEmptyMin};
-  Stream<float> maxX_{kEmptyMax}, maxY_{kEmptyMax}, maxZ_{kEmptyMax};
-  static constexpr float kEmptyMin = std::numeric_limits<float>::infinity();
-  static constexpr float kEmptyMax = -std::numeric_limits<float>::infinity();
+  const Stream<float>& minX() const { return fields_[0]; }
+  const Stream<float>& minY() const { return fields_[1]; }
+  const Stream<float>& minZ() const { return fields_[2]; }
+  const Stream<float>& maxX() const { return fields_[3]; }
+  const Stream<float>& maxY() const { return fields_[4]; }
+  const Stream<float>& maxZ() const { return fields_[5]; }
 };
 
-// Spheres as centre and radius.
-class SphereStream {
+// Spheres as centre and radius. Padding: radius -inf, which every test fails.
+class SphereStream : public StreamSet<4> {
  public:
-  std::size_t size() const { return r_.size(); }
-  std::size_t padded() const { return r_.padded(); }
-  void reserve(std::size_t n);
-  void clear() { resize(0); }
+  SphereStream() : StreamSet({0, 0, 0, -kPadInf}) {}
   void push(const Sphere& sphere);
   void set(std::size_t i, const Sphere& sphere);
   Sphere operator[](std::size_t i) const;
 
-  const Stream<float>& x() const { return x_; }
-  const Stream<float>& y() const { return y_; }
-  const Stream<float>& z() const { return z_; }
-  const Stream<float>& r() const { return r_; }
-
- private:
-  void resize(std::size_t n);
-  auto fields() { return std::array{&x_, &y_, &z_, &r_}; }
-  Stream<float> x_, y_, z_, r_{-std::numeric_limits<float>::infinity()};
+  const Stream<float>& x() const { return fields_[0]; }
+  const Stream<float>& y() const { return fields_[1]; }
+  const Stream<float>& z() const { return fields_[2]; }
+  const Stream<float>& r() const { return fields_[3]; }
 };
 
 // Boxes as centre and half extents, the layout of culling (n.c + d + |n|.h needs no
-// conversion, so no rounding is added to the workload's inputs).
-class BoundsStream {
+// conversion, so no rounding is added to the inputs). Padding: extents -inf.
+class BoundsStream : public StreamSet<6> {
  public:
-  std::size_t size() const { return cx_.size(); }
-  std::size_t padded() const { return cx_.padded(); }
-  void reserve(std::size_t n);
-  void clear() { resize(0); }
+  BoundsStream() : StreamSet({0, 0, 0, -kPadInf, -kPadInf, -kPadInf}) {}
   void push(const Vec3f& center, const Vec3f& halfExtents);
   Aabb operator[](std::size_t i) const;  // as min/max, for single queries
 
-  const Stream<float>& cx() const { return cx_; }
-  const Stream<float>& cy() const { return cy_; }
-  const Stream<float>& cz() const { return cz_; }
-  const Stream<float>& ex() const { return ex_; }
-  const Stream<float>& ey() const { return ey_; }
-  const Stream<float>& ez() const { return ez_; }
-
- private:
-  void resize(std::size_t n);
-  auto fields() { return std::array{&cx_, &cy_, &cz_, &ex_, &ey_, &ez_}; }
-  static constexpr float kEmpty = -std::numeric_limits<float>::infinity();
-  Stream<float> cx_, cy_, cz_, ex_{kEmpty}, ey_{kEmpty}, ez_{kEmpty};
+  const Stream<float>& cx() const { return fields_[0]; }
+  const Stream<float>& cy() const { return fields_[1]; }
+  const Stream<float>& cz() const { return fields_[2]; }
+  const Stream<float>& ex() const { return fields_[3]; }
+  const Stream<float>& ey() const { return fields_[4]; }
+  const Stream<float>& ez() const { return fields_[5]; }
 };
 
 }  // namespace simdphys
