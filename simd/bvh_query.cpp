@@ -13,6 +13,7 @@ namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+#include "simd/box_overlap-inl.hpp"
 #include "simd/compress-inl.hpp"
 #include "src/bvh/traverse-inl.hpp"
 
@@ -23,24 +24,12 @@ template <class Sink>
 class OverlapExpander {
  public:
   OverlapExpander(const BvhNode* nodes, const Box& q, Sink& sink)
-      : nodes_(nodes),
-        sink_(sink),
-        minX_(hn::Set(d_, q.minX)),
-        minY_(hn::Set(d_, q.minY)),
-        minZ_(hn::Set(d_, q.minZ)),
-        maxX_(hn::Set(d_, q.maxX)),
-        maxY_(hn::Set(d_, q.maxY)),
-        maxZ_(hn::Set(d_, q.maxZ)) {}
+      : nodes_(nodes), sink_(sink), overlap_(d_, q) {}
 
   int operator()(const BvhNode& n, std::uint32_t* stack, int top) {
     for (std::size_t h = 0; h < BvhNode::kWidth; h += hn::Lanes(d_)) {
-      auto x =
-          hn::And(hn::Le(hn::Load(d_, n.minX + h), maxX_), hn::Le(minX_, hn::Load(d_, n.maxX + h)));
-      auto y =
-          hn::And(hn::Le(hn::Load(d_, n.minY + h), maxY_), hn::Le(minY_, hn::Load(d_, n.maxY + h)));
-      auto z =
-          hn::And(hn::Le(hn::Load(d_, n.minZ + h), maxZ_), hn::Le(minZ_, hn::Load(d_, n.maxZ + h)));
-      auto hit = hn::RebindMask(du_, hn::And(x, hn::And(y, z)));
+      auto hit =
+          hn::RebindMask(du_, overlap_(d_, n.minX, n.minY, n.minZ, n.maxX, n.maxY, n.maxZ, h));
       if (hn::AllFalse(du_, hit)) continue;
       const auto child = hn::Load(du_, n.child + h);
       const auto leaf = hn::RebindMask(du_, hn::Lt(hn::BitCast(di_, child), hn::Zero(di_)));
@@ -65,7 +54,7 @@ class OverlapExpander {
   static constexpr hn::RebindToSigned<D> di_{};
   const BvhNode* nodes_;
   Sink& sink_;
-  hn::Vec<D> minX_, minY_, minZ_, maxX_, maxY_, maxZ_;
+  BoxOverlap<D> overlap_;
 };
 
 // Leaf sinks: count the leaves that pass, or collect their primitive ids.

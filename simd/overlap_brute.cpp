@@ -12,6 +12,8 @@ namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+#include "simd/box_overlap-inl.hpp"
+
 constexpr std::size_t kBlock = 1024;  // 24 KiB of boxes
 
 template <class CountBlock>
@@ -29,18 +31,12 @@ std::uint64_t CountOverlapsBrute(const BoxesView& b, const Box* queries, std::si
   const hn::ScalableTag<float> d;
   const hn::RebindToSigned<decltype(d)> di;
   return blocked(b, queries, nQueries, [&](const Box& q, std::size_t begin, std::size_t end) {
-    const auto qMinX = hn::Set(d, q.minX), qMinY = hn::Set(d, q.minY), qMinZ = hn::Set(d, q.minZ);
-    const auto qMaxX = hn::Set(d, q.maxX), qMaxY = hn::Set(d, q.maxY), qMaxZ = hn::Set(d, q.maxZ);
+    const BoxOverlap overlap(d, q);
     // Counts accumulate per lane (a true mask lane is -1) and are reduced once per block.
     auto counts = hn::Zero(di);
     for (std::size_t i = begin; i < end; i += hn::Lanes(d)) {
-      auto x =
-          hn::And(hn::Le(hn::Load(d, b.minX + i), qMaxX), hn::Le(qMinX, hn::Load(d, b.maxX + i)));
-      auto y =
-          hn::And(hn::Le(hn::Load(d, b.minY + i), qMaxY), hn::Le(qMinY, hn::Load(d, b.maxY + i)));
-      auto z =
-          hn::And(hn::Le(hn::Load(d, b.minZ + i), qMaxZ), hn::Le(qMinZ, hn::Load(d, b.maxZ + i)));
-      counts = hn::Sub(counts, hn::VecFromMask(di, hn::RebindMask(di, hn::And(x, hn::And(y, z)))));
+      auto hit = overlap(d, b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ, i);
+      counts = hn::Sub(counts, hn::VecFromMask(di, hn::RebindMask(di, hit)));
     }
     return std::uint64_t(hn::GetLane(hn::SumOfLanes(di, counts)));
   });

@@ -1,6 +1,8 @@
 // Paths and streams: dispatch, alignment, padding, validation.
 #include <gtest/gtest.h>
 
+#include "expect_error.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -79,15 +81,7 @@ TEST(Streams, RoundTripsValues) {
   EXPECT_EQ(boxes[0].max, c.max);
 }
 
-// The message names the function, the element and the field.
-void expectError(auto&& f, const std::string& fragment) {
-  try {
-    f();
-    FAIL() << "no error; expected one mentioning '" << fragment << "'";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-  }
-}
+using test::expectError;
 
 TEST(Streams, RejectsBadBoxesSayingWhere) {
   BoxStream boxes;

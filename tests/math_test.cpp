@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_error.hpp"
+
 #include <cmath>
 #include <concepts>
 #include <limits>
@@ -265,15 +267,7 @@ TYPED_TEST(Matrices, AdjugateOverDeterminantIsTheInverse) {
   checkAdjugateInverse<TypeParam, 4>();
 }
 
-template <class F>
-void expectError(F&& f, const std::string& fragment) {
-  try {
-    f();
-    FAIL() << "no error; expected one mentioning '" << fragment << "'";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-  }
-}
+using test::expectError;
 
 TYPED_TEST(Matrices, RejectOutOfRangeRowOrColumn) {
   using T = TypeParam;
