@@ -25,3 +25,20 @@ HWY_INLINE std::size_t compressStore32(D d, V v, M m, hn::TFromD<D>* out) {
   return std::size_t(__builtin_popcount(bits[0]));
 #endif
 }
+
+// Writes the indices i < padded (ascending) of the lanes where `keep(d, i)` holds to `out`, which
+// has room for `padded` indices, and returns how many. The selection loop of every kernel that
+// answers "which elements of this stream ...".
+template <class Keep>
+std::size_t selectIndices(std::size_t padded, std::uint32_t* out, Keep keep) {
+  const hn::ScalableTag<float> d;
+  const hn::RebindToUnsigned<decltype(d)> du;
+  const std::size_t n = hn::Lanes(d);
+  auto index = hn::Iota(du, 0);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < padded; i += n) {
+    count += compressStore32(du, index, hn::RebindMask(du, keep(d, i)), out + count);
+    index = hn::Add(index, hn::Set(du, static_cast<std::uint32_t>(n)));
+  }
+  return count;
+}

@@ -15,21 +15,6 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 #include "simd/compress-inl.hpp"
 
-// `visible(d, i)` gives the lanes of the vector at element i that all six planes keep.
-template <class Visible>
-std::size_t compact(std::size_t padded, std::uint32_t* out, Visible visible) {
-  const hn::ScalableTag<float> d;
-  const hn::RebindToUnsigned<decltype(d)> du;
-  const std::size_t n = hn::Lanes(d);
-  auto index = hn::Iota(du, 0);
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < padded; i += n) {
-    count += compressStore32(du, index, hn::RebindMask(du, visible(d, i)), out + count);
-    index = hn::Add(index, hn::Set(du, static_cast<std::uint32_t>(n)));
-  }
-  return count;
-}
-
 // n.p + d, summed in the reference's order: ((nx x + ny y) + nz z) + d.
 template <class D, class V>
 V planeDistance(D d, const Planes& p, int k, V x, V y, V z) {
@@ -39,7 +24,7 @@ V planeDistance(D d, const Planes& p, int k, V x, V y, V z) {
 }
 
 std::size_t CullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* out) {
-  return compact(s.padded, out, [&](auto d, std::size_t i) {
+  return selectIndices(s.padded, out, [&](auto d, std::size_t i) {
     const auto x = hn::Load(d, s.x + i), y = hn::Load(d, s.y + i), z = hn::Load(d, s.z + i);
     const auto negR = hn::Neg(hn::Load(d, s.r + i));
     auto keep = hn::Ge(planeDistance(d, p, 0, x, y, z), negR);
@@ -49,7 +34,7 @@ std::size_t CullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* ou
 }
 
 std::size_t CullBounds(const Planes& p, const BoundsView& b, std::uint32_t* out) {
-  return compact(b.padded, out, [&](auto d, std::size_t i) {
+  return selectIndices(b.padded, out, [&](auto d, std::size_t i) {
     const auto x = hn::Load(d, b.cx + i), y = hn::Load(d, b.cy + i), z = hn::Load(d, b.cz + i);
     const auto ex = hn::Load(d, b.ex + i), ey = hn::Load(d, b.ey + i), ez = hn::Load(d, b.ez + i);
     auto visible = [&](int k) {
