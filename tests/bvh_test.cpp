@@ -1,6 +1,8 @@
 // The wide BVH: structure, box queries against brute force, refit, on every path.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <algorithm>
 
 #include "box_sets.hpp"
@@ -130,6 +132,33 @@ TEST_P(BvhQuery, RefitAnswersLikeARebuild) {
   Bvh rebuilt(boxes);
   for (std::size_t i = 0; i < boxes.size(); i += 13)
     ASSERT_EQ(sortedQuery(tree, boxes[i]), sortedQuery(rebuilt, boxes[i])) << "box " << i;
+}
+
+// Subtrees are built as parallel tasks and spliced in slot order: the tree must be the same,
+// node for node, whatever the number of threads.
+TEST(Bvh, BuildIsIndependentOfTheThreadCount) {
+  BoxStream boxes = test::randomBoxes(27, 60'000, 100, 0.1f, 2);  // several parallel subtrees
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  Bvh one(boxes);
+  omp_set_num_threads(4);
+  Bvh four(boxes);
+  omp_set_num_threads(before);
+  ASSERT_EQ(one.nodes().size(), four.nodes().size());
+  for (std::size_t n = 0; n < one.nodes().size(); ++n) {
+    const BvhNode &a = one.nodes()[n], &b = four.nodes()[n];
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      ASSERT_EQ(a.child[k], b.child[k]) << "node " << n << " slot " << k;
+      // Bit-identical bounds: the same splits, so the same unions (empty slots are +-inf).
+      ASSERT_EQ(a.minX[k], b.minX[k]);
+      ASSERT_EQ(a.minY[k], b.minY[k]);
+      ASSERT_EQ(a.minZ[k], b.minZ[k]);
+      ASSERT_EQ(a.maxX[k], b.maxX[k]);
+      ASSERT_EQ(a.maxY[k], b.maxY[k]);
+      ASSERT_EQ(a.maxZ[k], b.maxZ[k]);
+    }
+  }
+  EXPECT_EQ(one.depth(), four.depth());
 }
 
 TEST(Bvh, RefitRejectsAnotherStream) {

@@ -16,6 +16,8 @@ constexpr int kBins = 16;
 constexpr int kMaxSahDepth = 40;
 // Ranges this small are split at the median: as good as SAH for a handful of boxes, and cheap.
 constexpr std::uint32_t kSmallRange = 16;
+// Subtrees above this many primitives are built as parallel tasks.
+constexpr std::uint32_t kParallelGrain = 8192;
 
 struct Bounds {
   std::array<float, 3> lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
@@ -62,7 +64,11 @@ class Builder {
   int build() {
     Range all{0, std::uint32_t(prims_.size()), {}, {}, 0};
     for (const PrimRef& p : prims_) grow(all, p);
-    return buildNode(all);
+    int depth = 0;
+#pragma omp parallel
+#pragma omp single
+    depth = buildNode(all, nodes_);
+    return depth;
   }
 
  private:
@@ -74,10 +80,13 @@ class Builder {
     }
   }
 
-  // Returns the depth (in nodes) of the subtree it builds at index nodes_.size() on entry.
-  int buildNode(const Range& range) {
-    std::uint32_t index = std::uint32_t(nodes_.size());
-    nodes_.emplace_back();
+  // Builds the subtree of `range` at the end of `out`, children after their parent, depth first;
+  // returns its depth in nodes. Large child ranges are built as OpenMP tasks, each into a list of
+  // its own, then appended in slot order with their node indices moved: the tree is the same,
+  // node for node, whatever the number of threads.
+  int buildNode(const Range& range, std::vector<BvhNode>& out) {
+    const std::uint32_t index = std::uint32_t(out.size());
+    out.emplace_back();
     std::array<Range, BvhNode::kWidth> kids;
     int used = 1;
     kids[0] = range;
@@ -91,6 +100,14 @@ class Builder {
       kids[best] = left;
       kids[used++] = right;
     }
+    std::array<std::vector<BvhNode>, BvhNode::kWidth> subtrees;
+    std::array<int, BvhNode::kWidth> depths{};
+    for (int k = 0; k < used; ++k) {
+      if (kids[k].count() > kParallelGrain) {
+#pragma omp task default(shared) firstprivate(k)
+        depths[k] = buildNode(kids[k], subtrees[k]);
+      }
+    }
     BvhNode node;
     int depth = 1;
     for (int k = 0; k < BvhNode::kWidth; ++k) {
@@ -101,13 +118,29 @@ class Builder {
       if (k >= used) continue;
       if (kids[k].count() == 1) {
         node.child[k] = BvhNode::kLeaf | prims_[kids[k].begin].id;
+        continue;
+      }
+      node.child[k] = std::uint32_t(out.size());
+      if (kids[k].count() > kParallelGrain) {
+#pragma omp taskwait
+        append(subtrees[k], out);
+        depth = std::max(depth, 1 + depths[k]);
       } else {
-        node.child[k] = std::uint32_t(nodes_.size());
-        depth = std::max(depth, 1 + buildNode(kids[k]));
+        depth = std::max(depth, 1 + buildNode(kids[k], out));
       }
     }
-    nodes_[index] = node;
+    out[index] = node;
     return depth;
+  }
+
+  // Appends a subtree built on its own, moving its child node indices to where it lands.
+  static void append(const std::vector<BvhNode>& subtree, std::vector<BvhNode>& out) {
+    const std::uint32_t offset = std::uint32_t(out.size());
+    for (BvhNode node : subtree) {
+      for (std::uint32_t& c : node.child)
+        if (c != BvhNode::kEmpty && !BvhNode::isLeaf(c)) c += offset;
+      out.push_back(node);
+    }
   }
 
   std::pair<Range, Range> split(const Range& r) {
