@@ -4,3 +4,4 @@
 
 #include "simdphys/geometry3d/primitives.hpp"
 #include "simdphys/geometry3d/streams.hpp"
+#include "simdphys/geometry3d/raycast.hpp"
