@@ -88,6 +88,33 @@ struct SweepCell {
 void sweepCell(const SweepCell& cell, std::vector<Pair>& out);
 void sweepCellAutovec(const SweepCell& cell, std::vector<Pair>& out);
 
+// ---- geometry3d batch forms (geometry3d/batch.hpp) -------------------------------------------
+// Which elements of a stream one shape touches: indices ascending in `out` (room for `padded`),
+// their number returned. Sums in the scalar reference's order, unfused, so every path agrees.
+struct SphereQuery {
+  float x, y, z, r;
+  float tolerance;  // kGeometryTolerance of point_tests.hpp, passed in to keep one definition
+};
+std::size_t sphereOverlapsSpheres(const SphereQuery& s, const SpheresView& v, std::uint32_t* out);
+std::size_t sphereOverlapsBoxes(const SphereQuery& s, const BoxesView& v, std::uint32_t* out);
+std::size_t pointInBoxes(float x, float y, float z, const BoxesView& v, std::uint32_t* out);
+// For every box, the point of it closest to (x, y, z), in three padded arrays.
+void closestPointsOnBoxes(float x, float y, float z, const BoxesView& v, float* cx, float* cy,
+                          float* cz);
+
+// The closest element a ray hits, t in [0, tMax] (the scalar raycast's rules), ties to the
+// smaller index; index = kNoHit when none. The ray's direction is unit.
+struct RayQuery {
+  float ox, oy, oz, dx, dy, dz, tMax;
+};
+struct StreamHit {
+  std::uint32_t index;
+  float t;
+};
+inline constexpr std::uint32_t kNoHit = ~0u;
+StreamHit rayClosestBox(const RayQuery& ray, const BoxesView& v);
+StreamHit rayClosestSphere(const RayQuery& ray, const SpheresView& v);
+
 // ---- W6: frustum culling ----------------------------------------------------------------------
 // Writes the indices of visible objects, ascending, to `out` (room for `padded` indices) and
 // returns how many. The plain-loop baselines have the same contract.

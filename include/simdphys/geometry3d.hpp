@@ -5,3 +5,4 @@
 #include "simdphys/geometry3d/primitives.hpp"
 #include "simdphys/geometry3d/streams.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
+#include "simdphys/geometry3d/batch.hpp"

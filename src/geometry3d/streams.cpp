@@ -58,4 +58,9 @@ Aabb BoundsStream::operator[](std::size_t i) const {
   return {c - e, c + e};
 }
 
+void PointStream::push(const Vec3f& p) {
+  detail::requireFiniteField(p, at("PointStream::push", size()), "point");
+  append({p.x(), p.y(), p.z()});
+}
+
 }  // namespace simdphys

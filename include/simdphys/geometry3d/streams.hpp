@@ -90,4 +90,23 @@ class BoundsStream : public StreamSet<6> {
   const Stream<float>& ez() const { return fields_[5]; }
 };
 
+// Points, the output of batch closest-point queries. Padding: zeros.
+class PointStream : public StreamSet<3> {
+ public:
+  PointStream() : StreamSet({0, 0, 0}) {}
+  void push(const Vec3f& p);
+  Vec3f operator[](std::size_t i) const { return {value(0, i), value(1, i), value(2, i)}; }
+  // Makes the stream n points long and lets `write(x, y, z)` fill them (it may write the padding
+  // too, which is restored after).
+  template <class Writer>
+  void overwrite(std::size_t n, Writer write) {
+    resize(n);
+    write(fields_[0].data(), fields_[1].data(), fields_[2].data());
+    resize(n);
+  }
+  const Stream<float>& x() const { return fields_[0]; }
+  const Stream<float>& y() const { return fields_[1]; }
+  const Stream<float>& z() const { return fields_[2]; }
+};
+
 }  // namespace simdphys

@@ -1,0 +1,38 @@
+// Batch forms of the 3D queries: one shape or ray against a whole stream, a SIMD vector of
+// elements at a time. Each answers exactly as its scalar function does for every element
+// (intersect.hpp, point_tests.hpp, raycast.hpp), on every path.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/geometry3d/streams.hpp"
+
+namespace simdphys {
+
+// The indices (ascending) of the spheres / boxes that `sphere` intersects (closed), written to
+// `out`; returns their number.
+std::size_t overlapping(const Sphere& sphere, const SphereStream& spheres,
+                        std::vector<std::uint32_t>& out);
+std::size_t overlapping(const Sphere& sphere, const BoxStream& boxes,
+                        std::vector<std::uint32_t>& out);
+// The indices (ascending) of the boxes that contain `point` (closed).
+std::size_t containing(const Vec3f& point, const BoxStream& boxes, std::vector<std::uint32_t>& out);
+// For every box, the point of it closest to `point` (the point itself when inside).
+void closestPoints(const Vec3f& point, const BoxStream& boxes, PointStream& out);
+
+// The first element a ray hits: the smallest t in [0, tMax] by raycast()'s rules (a ray that
+// starts inside a solid hits where it leaves), ties to the smaller index.
+struct StreamHit {
+  std::uint32_t index;
+  float t;
+};
+std::optional<StreamHit> raycast(const Ray& ray, const BoxStream& boxes,
+                                 float tMax = std::numeric_limits<float>::infinity());
+std::optional<StreamHit> raycast(const Ray& ray, const SphereStream& spheres,
+                                 float tMax = std::numeric_limits<float>::infinity());
+
+}  // namespace simdphys

@@ -1,0 +1,96 @@
+// Batch queries: the reference path loops over the scalar functions; the SIMD kernels mirror them.
+#include "simdphys/geometry3d/batch.hpp"
+
+#include "../views.hpp"
+#include "simdphys/geometry3d/intersect.hpp"
+#include "simdphys/geometry3d/point_tests.hpp"
+#include "simdphys/geometry3d/raycast.hpp"
+
+namespace simdphys {
+namespace {
+
+// Runs `kernel` into room for a whole padded stream, or the scalar `test` per element.
+template <class Test, class Kernel>
+std::size_t select(std::size_t n, std::size_t padded, std::vector<std::uint32_t>& out, Test test,
+                   Kernel kernel) {
+  out.clear();
+  if (referencePathActive()) {
+    for (std::uint32_t i = 0; i < n; ++i)
+      if (test(i)) out.push_back(i);
+    return out.size();
+  }
+  out.resize(padded);  // kernels store whole vectors
+  out.resize(kernel(out.data()));
+  return out.size();
+}
+
+simd::SphereQuery query(const Sphere& s) {
+  return {s.center.x(), s.center.y(), s.center.z(), s.radius, kGeometryTolerance<float>};
+}
+
+simd::RayQuery query(const Ray& r, float tMax) {
+  return {r.origin.x(),    r.origin.y(),    r.origin.z(), r.direction.x(),
+          r.direction.y(), r.direction.z(), tMax};
+}
+
+template <class Stream, class Kernel>
+std::optional<StreamHit> closest(const Ray& ray, const Stream& stream, float tMax, Kernel kernel) {
+  validate(ray, "raycast");
+  if (referencePathActive()) {
+    std::optional<StreamHit> best;
+    for (std::uint32_t i = 0; i < stream.size(); ++i)
+      if (auto hit = raycast(stream[i], ray, tMax); hit && (!best || hit->t < best->t))
+        best = StreamHit{i, hit->t};
+    return best;
+  }
+  const simd::StreamHit hit = kernel(query(ray, tMax), view(stream));
+  if (hit.index == simd::kNoHit) return std::nullopt;
+  return StreamHit{hit.index, hit.t};
+}
+
+}  // namespace
+
+std::size_t overlapping(const Sphere& s, const SphereStream& spheres,
+                        std::vector<std::uint32_t>& out) {
+  validate(s, "overlapping");
+  return select(
+      spheres.size(), spheres.padded(), out,
+      [&](std::uint32_t i) { return intersects(s, spheres[i]); },
+      [&](std::uint32_t* o) { return simd::sphereOverlapsSpheres(query(s), view(spheres), o); });
+}
+
+std::size_t overlapping(const Sphere& s, const BoxStream& boxes, std::vector<std::uint32_t>& out) {
+  validate(s, "overlapping");
+  return select(
+      boxes.size(), boxes.padded(), out, [&](std::uint32_t i) { return intersects(s, boxes[i]); },
+      [&](std::uint32_t* o) { return simd::sphereOverlapsBoxes(query(s), view(boxes), o); });
+}
+
+std::size_t containing(const Vec3f& p, const BoxStream& boxes, std::vector<std::uint32_t>& out) {
+  detail::requireFiniteField(p, "containing", "point");
+  return select(
+      boxes.size(), boxes.padded(), out, [&](std::uint32_t i) { return contains(boxes[i], p); },
+      [&](std::uint32_t* o) { return simd::pointInBoxes(p.x(), p.y(), p.z(), view(boxes), o); });
+}
+
+void closestPoints(const Vec3f& p, const BoxStream& boxes, PointStream& out) {
+  detail::requireFiniteField(p, "closestPoints", "point");
+  out.overwrite(boxes.size(), [&](float* x, float* y, float* z) {
+    if (!referencePathActive())
+      return simd::closestPointsOnBoxes(p.x(), p.y(), p.z(), view(boxes), x, y, z);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const Vec3f q = closestPoint(boxes[i], p);
+      x[i] = q.x(), y[i] = q.y(), z[i] = q.z();
+    }
+  });
+}
+
+std::optional<StreamHit> raycast(const Ray& ray, const BoxStream& boxes, float tMax) {
+  return closest(ray, boxes, tMax, simd::rayClosestBox);
+}
+
+std::optional<StreamHit> raycast(const Ray& ray, const SphereStream& spheres, float tMax) {
+  return closest(ray, spheres, tMax, simd::rayClosestSphere);
+}
+
+}  // namespace simdphys
