@@ -114,6 +114,18 @@ struct StreamHit {
 inline constexpr std::uint32_t kNoHit = ~0u;
 StreamHit rayClosestBox(const RayQuery& ray, const BoxesView& v);
 StreamHit rayClosestSphere(const RayQuery& ray, const SpheresView& v);
+// Triangles as nine SoA rows (vertex a, b, c; x, y, z), padding with zero area.
+struct TrianglesView {
+  const float* v[3][3];
+  std::size_t count, padded;
+};
+// The ray's watertight precomputation (Woop, Benthin, Wald 2013; raycast.hpp's WatertightRay).
+struct WatertightQuery {
+  float ox, oy, oz;
+  int kx, ky, kz;
+  float sx, sy, sz, tMax;
+};
+StreamHit rayClosestTriangle(const WatertightQuery& ray, const TrianglesView& v);
 
 // ---- W6: frustum culling ----------------------------------------------------------------------
 // Writes the indices of visible objects, ascending, to `out` (room for `padded` indices) and

@@ -21,6 +21,13 @@ inline simd::BoundsView view(const BoundsStream& b) {
           b.ey().data(), b.ez().data(), b.size(),      b.padded()};
 }
 
+inline simd::TrianglesView view(const TriangleStream& t) {
+  simd::TrianglesView v{{}, t.size(), t.padded()};
+  for (int q = 0; q < 3; ++q)
+    for (int k = 0; k < 3; ++k) v.v[q][k] = t.vertex(q, k).data();
+  return v;
+}
+
 inline simd::Box box(const Aabb& b) {
   return {b.min.x(), b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()};
 }

@@ -2,6 +2,8 @@
 // applied element by element (same indices, same booleans, bit-identical t).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "box_sets.hpp"
 #include "paths.hpp"
 #include "simdphys/geometry3d/batch.hpp"
@@ -140,6 +142,43 @@ TEST_P(Batch3d, RaycastHardCases) {
   EXPECT_EQ(tie->t, 1.0f);
 }
 
+// A small heightfield as in W2: two triangles a cell, shared edges and vertices everywhere.
+TriangleStream heightfield(int g) {
+  TriangleStream t;
+  auto vertex = [&](int i, int j) {
+    float x = -10 + 20.0f * i / (g - 1), z = -10 + 20.0f * j / (g - 1);
+    return Vec3f(x, float(std::sin(0.3 * x) * std::cos(0.2 * z)), z);
+  };
+  for (int j = 0; j + 1 < g; ++j)
+    for (int i = 0; i + 1 < g; ++i) {
+      t.push({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+      t.push({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+    }
+  return t;
+}
+
+TEST_P(Batch3d, TriangleRaycastsEqualTheScalarRaycast) {
+  const TriangleStream mesh = heightfield(9);  // 128 triangles
+  scenes::Random r(49);
+  int hits = 0;
+  for (int q = 0; q < 400; ++q) {
+    const Ray ray{{r.uniform(-12, 12), r.uniform(2, 6), r.uniform(-12, 12)}, r.unitDirection()};
+    const auto want = firstHit(ray, mesh, std::numeric_limits<float>::infinity());
+    hits += want.has_value();
+    expectSameHit(raycast(ray, mesh), want);
+  }
+  EXPECT_GT(hits, 50);  // the rays must exercise hits, not only misses
+  // Straight down through every vertex and edge midpoint of the grid: shared by 2 to 6
+  // triangles, each must hit (watertight), and every path picks the same one.
+  for (int j = 0; j < 9; ++j)
+    for (int i = 0; i < 17; ++i) {
+      const Ray down{{-10 + 20.0f * i / 16, 5, -10 + 20.0f * j / 8}, {0, -1, 0}};
+      const auto got = raycast(down, mesh);
+      ASSERT_TRUE(got.has_value()) << "leak at " << i << ", " << j;
+      expectSameHit(got, firstHit(down, mesh, std::numeric_limits<float>::infinity()));
+    }
+}
+
 TEST(Batch3dErrors, RejectBadQueries) {
   const BoxStream boxes = test::randomBoxes(48, 10, 5, 0.1f, 1);
   std::vector<std::uint32_t> out;
@@ -148,6 +187,8 @@ TEST(Batch3dErrors, RejectBadQueries) {
   EXPECT_THROW(overlapping(Sphere{{0, 0, 0}, -1}, boxes, out), Error);
   EXPECT_THROW(containing({0, nan, 0}, boxes, out), Error);
   EXPECT_THROW(raycast(Ray{{0, 0, 0}, {1, 1, 0}}, boxes), Error);  // not unit
+  TriangleStream triangles;
+  EXPECT_THROW(triangles.push({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}), Error);  // collinear
 }
 
 }  // namespace

@@ -93,4 +93,12 @@ std::optional<StreamHit> raycast(const Ray& ray, const SphereStream& spheres, fl
   return closest(ray, spheres, tMax, simd::rayClosestSphere);
 }
 
+std::optional<StreamHit> raycast(const Ray& ray, const TriangleStream& triangles, float tMax) {
+  return closest(ray, triangles, tMax, [](const simd::RayQuery& q, const simd::TrianglesView& v) {
+    const WatertightRay w(Vec3f(q.ox, q.oy, q.oz), Vec3f(q.dx, q.dy, q.dz));
+    return simd::rayClosestTriangle({q.ox, q.oy, q.oz, w.kx, w.ky, w.kz, w.sx, w.sy, w.sz, q.tMax},
+                                    v);
+  });
+}
+
 }  // namespace simdphys

@@ -1,5 +1,7 @@
 #include "simdphys/geometry3d/streams.hpp"
 
+#include "simdphys/geometry3d/raycast.hpp"
+
 namespace simdphys {
 namespace {
 
@@ -56,6 +58,15 @@ void BoundsStream::push(const Vec3f& center, const Vec3f& halfExtents) {
 Aabb BoundsStream::operator[](std::size_t i) const {
   const Vec3f c(value(0, i), value(1, i), value(2, i)), e(value(3, i), value(4, i), value(5, i));
   return {c - e, c + e};
+}
+
+void TriangleStream::push(const Triangle& t) {
+  const std::string where = at("TriangleStream::push", size());
+  validate(t, where);
+  // The same test as raycast's, which never hits such a triangle.
+  if ((detail::rays::triangleNormalWide(t).array() == 0).all())
+    throw Error(where + ": the triangle is degenerate (its vertices are collinear)");
+  append({t.a.x(), t.a.y(), t.a.z(), t.b.x(), t.b.y(), t.b.z(), t.c.x(), t.c.y(), t.c.z()});
 }
 
 void PointStream::push(const Vec3f& p) {

@@ -34,5 +34,8 @@ std::optional<StreamHit> raycast(const Ray& ray, const BoxStream& boxes,
                                  float tMax = std::numeric_limits<float>::infinity());
 std::optional<StreamHit> raycast(const Ray& ray, const SphereStream& spheres,
                                  float tMax = std::numeric_limits<float>::infinity());
+// Watertight (Woop, Benthin and Wald 2013), two-sided.
+std::optional<StreamHit> raycast(const Ray& ray, const TriangleStream& triangles,
+                                 float tMax = std::numeric_limits<float>::infinity());
 
 }  // namespace simdphys

@@ -90,6 +90,22 @@ class BoundsStream : public StreamSet<6> {
   const Stream<float>& ez() const { return fields_[5]; }
 };
 
+// Triangles as the SoA of their vertices (a triangle soup). Degenerate triangles (collinear
+// vertices: the normal, computed in double, is exactly zero) are rejected, as they have no
+// surface to hit. Padding: all vertices at the origin, which no ray hits (no area).
+class TriangleStream : public StreamSet<9> {
+ public:
+  TriangleStream() : StreamSet({0, 0, 0, 0, 0, 0, 0, 0, 0}) {}
+  void push(const Triangle& t);
+  Triangle operator[](std::size_t i) const {
+    return {{value(0, i), value(1, i), value(2, i)},
+            {value(3, i), value(4, i), value(5, i)},
+            {value(6, i), value(7, i), value(8, i)}};
+  }
+  // Vertex v (0, 1, 2 for a, b, c), coordinate k (0, 1, 2 for x, y, z).
+  const Stream<float>& vertex(int v, int k) const { return fields_[3 * v + k]; }
+};
+
 // Points, the output of batch closest-point queries. Padding: zeros.
 class PointStream : public StreamSet<3> {
  public:
