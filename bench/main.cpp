@@ -12,6 +12,7 @@ namespace simdphys::bench {
 void registerAabbBenchmarks();
 void registerCullBenchmarks();
 void registerBandwidthBenchmarks();
+void registerGeometry3dBenchmarks();
 }  // namespace simdphys::bench
 
 namespace {
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   bench::registerAabbBenchmarks();
   bench::registerCullBenchmarks();
   bench::registerBandwidthBenchmarks();
+  bench::registerGeometry3dBenchmarks();
 #ifdef SIMDPHYS_HAVE_BULLET
   bench::registerBulletBenchmarks();
 #endif

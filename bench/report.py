@@ -23,6 +23,8 @@ TASKS = {
     "aabb_query": ("tests/s", "brute"), "aabb_build": ("boxes/s", None),
     "aabb_pairs": ("boxes/s", "grid"), "cull_spheres": ("objects/s", "planes"),
     "cull_boxes": ("objects/s", "planes"), "bandwidth": ("B/s", None),
+    "ray_boxes": ("ray-box tests/s", "closest"), "ray_spheres": ("ray-sphere tests/s", "closest"),
+    "ray_triangles": ("ray-triangle tests/s", "closest"),
 }
 # Report sections: title, tasks, image name (or None), what is compared.
 SECTIONS = [
@@ -45,6 +47,13 @@ SECTIONS = [
      "1,000,000 spheres (16 bytes each) or AABBs (24 bytes each) tested against six planes; "
      "'double-ref diff' is the number of objects whose visibility differs from a "
      "double-precision cull."),
+    ("Batch raycasts: one ray against a stream", ["ray_boxes", "ray_spheres", "ray_triangles"],
+     "rays",
+     "256 rays (seed 3) each find their closest hit among 100,000 W1 boxes, 100,000 spheres "
+     "(seed 7) or the 32,768 triangles of a 129 x 129 W2 heightfield, testing every element; "
+     "throughput is element tests per second. 'error' is the largest |t - t_double| / "
+     "max(1, t_double) against the same query in double; 'differing' counts rays whose hit or "
+     "element differs from it. No auto-vectorised baseline yet."),
     ("Bandwidth: streaming read", ["bandwidth"], "bandwidth",
      "A plain reduction over a buffer at the W6 working-set sizes and at 512 MiB (main "
      "memory): the ceiling the memory-bound kernels are read against."),
@@ -160,6 +169,9 @@ def check(r):
         notes.append("checksum OK" if c["checksum_ok"] == 1 else "checksum WRONG")
     if r.task.startswith("cull") and "error" in c:
         notes.append(f"double-ref diff: {c['error']:.0f}")
+    if r.task.startswith("ray_") and "error" in c:
+        notes.append(f"{c.get('result', 0):.0f} hits, t error {c['error']:.2g} vs double, "
+                     f"{c.get('differing', 0):.0f} rays differ")
     if "nodes" in c:
         notes.append(f"{c['nodes']:.0f} nodes, depth {c.get('depth', 0):.0f}")
     return ", ".join(notes)

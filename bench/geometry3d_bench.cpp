@@ -1,0 +1,115 @@
+// Batch 3D queries: closest ray hit against a stream of boxes, spheres or triangles, on every
+// path, with the largest error of t against the same query in double precision.
+#include <cmath>
+
+#include "bench_common.hpp"
+#include "simdphys/geometry3d/batch.hpp"
+#include "simdphys/geometry3d/raycast.hpp"
+
+namespace simdphys::bench {
+namespace {
+
+constexpr std::size_t kRays = 256;
+
+// Rays from seed 3: origins uniform in the W1 cube, random unit directions.
+const std::vector<Ray>& rays() {
+  static const std::vector<Ray> r = [] {
+    scenes::Random rnd(3);
+    std::vector<Ray> out;
+    for (std::size_t i = 0; i < kRays; ++i) {
+      Vec3f o(rnd.uniform(-100, 100), rnd.uniform(-100, 100), rnd.uniform(-100, 100));
+      out.push_back({o, rnd.unitDirection()});
+    }
+    return out;
+  }();
+  return r;
+}
+
+const SphereStream& spheres() {
+  static const SphereStream s = [] {
+    scenes::Random rnd(7);
+    SphereStream out;
+    for (int i = 0; i < 100'000; ++i) {
+      Vec3f c(rnd.uniform(-100, 100), rnd.uniform(-100, 100), rnd.uniform(-100, 100));
+      out.push({c, rnd.uniform(0.1f, 1.5f)});
+    }
+    return out;
+  }();
+  return s;
+}
+
+// The W2 heightfield, 129 x 129 vertices (32,768 triangles) so a brute-force batch stays short.
+const TriangleStream& triangles() {
+  static const TriangleStream t = [] {
+    constexpr int g = 129;
+    auto vertex = [](int i, int j) {
+      double x = -100 + 200.0 * i / (g - 1), z = -100 + 200.0 * j / (g - 1);
+      return Vec3f(
+          float(x),
+          float(8 * std::sin(0.07 * x) * std::cos(0.05 * z) + 3 * std::sin(0.31 * x + 0.17 * z)),
+          float(z));
+    };
+    TriangleStream out;
+    for (int j = 0; j + 1 < g; ++j)
+      for (int i = 0; i + 1 < g; ++i) {
+        out.push({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+        out.push({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+      }
+    return out;
+  }();
+  return t;
+}
+
+// The largest |t - t_double| / max(1, t_double) over the rays that hit in both precisions, and
+// the number of rays whose hit/miss or element differs from the double query.
+template <class Stream, class Get>
+void errorAgainstDouble(benchmark::State& state, const Stream& stream, Get elementDouble) {
+  double worst = 0;
+  int differing = 0;
+  for (const Ray& ray : rays()) {
+    const auto hit = raycast(ray, stream);
+    std::optional<std::pair<std::uint32_t, double>> exact;
+    const Rayd rayd = cast<double>(ray);
+    for (std::uint32_t i = 0; i < stream.size(); ++i)
+      if (auto h = raycast(elementDouble(i), rayd); h && (!exact || h->t < exact->second))
+        exact = std::pair{i, h->t};
+    if (hit.has_value() != exact.has_value() || (hit && hit->index != exact->first)) {
+      ++differing;
+      continue;
+    }
+    if (hit)
+      worst = std::max(worst, std::abs(hit->t - exact->second) / std::max(1.0, exact->second));
+  }
+  state.counters["error"] = worst;
+  state.counters["differing"] = differing;
+}
+
+template <class Stream, class Get>
+void rayBody(benchmark::State& state, const Stream& stream, Get elementDouble) {
+  std::size_t hits = 0;
+  for (auto _ : state) {
+    hits = 0;
+    for (const Ray& ray : rays()) hits += raycast(ray, stream).has_value();
+    benchmark::DoNotOptimize(hits);
+  }
+  state.SetItemsProcessed(std::int64_t(state.iterations() * rays().size() * stream.size()));
+  state.counters["result"] = double(hits);
+  errorAgainstDouble(state, stream, elementDouble);
+}
+
+}  // namespace
+
+void registerGeometry3dBenchmarks() {
+  const auto& boxes = aabbWorkload(100'000).boxes;
+  registerPerPath("ray_boxes", "closest", boxes.size(), [&boxes](benchmark::State& state) {
+    rayBody(state, boxes, [&](std::uint32_t i) { return cast<double>(boxes[i]); });
+  });
+  registerPerPath("ray_spheres", "closest", spheres().size(), [](benchmark::State& state) {
+    rayBody(state, spheres(), [](std::uint32_t i) { return cast<double>(spheres()[i]); });
+  });
+  registerPerPath("ray_triangles", "closest", triangles().size(), [](benchmark::State& state) {
+    rayBody(state, triangles(), [](std::uint32_t i) { return cast<double>(triangles()[i]); });
+  });
+}
+
+}  // namespace simdphys::bench
