@@ -2,7 +2,9 @@
 // linetests, GJK and EPA, and the streams and batch forms over many primitives.
 #pragma once
 
-#include "simdphys/geometry3d/primitives.hpp"
-#include "simdphys/geometry3d/streams.hpp"
-#include "simdphys/geometry3d/raycast.hpp"
 #include "simdphys/geometry3d/batch.hpp"
+#include "simdphys/geometry3d/intersect.hpp"
+#include "simdphys/geometry3d/point_tests.hpp"
+#include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/geometry3d/raycast.hpp"
+#include "simdphys/geometry3d/streams.hpp"

@@ -12,7 +12,7 @@
 //   n.p + d is computed in absolute coordinates). The second term is the rounding of p's own
 //   coordinates (each is rounded by up to eps/2 of itself): a computed point, such as a closest
 //   point, is only that precise, about one ulp of its largest coordinate. The solids use the same
-//   rule, so contains(s, closestPoint(s, p)) always holds; the AABB alone is tested exactly (no
+//   rule, so contains(s, closestPoint(s, p)) holds (tested); the AABB alone is tested exactly (no
 //   arithmetic, only comparisons; its closest point, a clamp, is exact too).
 // - Differences are taken relative to a point of the shape before anything is multiplied, so a
 //   shape of size 1e-2 at coordinates of 1e5 is handled at the precision of its size, not of its
@@ -87,7 +87,8 @@ T longestEdgeSquared(const Vec3<T>& ab, const Vec3<T>& ac, const Vec3<T>& bc) {
 // A triangle is degenerate when its height over the longest edge L is at most the tolerance times
 // L, |ab x ac| <= tol L^2: it is then a segment (or a point) to within the tolerance. The cross
 // product is accurate to about 2 eps L^2, so an exactly collinear triangle is always degenerate.
-// Compares norms, not squared norms, so that shapes of 1e-6 do not underflow in float.
+// Compares norms, not squared norms, so that shapes of 1e-6 do not underflow in float (|n|^2
+// ~ L^4 stays a normal number down to sizes of about 1e-9 in float, 1e-77 in double).
 template <class T>
 bool degenerateTriangle(const Vec3<T>& normal, T longestSquared) {
   return normal.norm() <= kGeometryTolerance<T> * longestSquared;
@@ -191,12 +192,12 @@ bool contains(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point) {
   return excess <= detail::onShapeTolerance(offset.norm() + box.halfExtents.maxCoeff(), point);
 }
 
-// On the plane: |n.p + d| <= tolerance * (|p| + |d|), the magnitudes n.p + d is computed from
-// (its rounding error is below 2 eps (|p| + |d|) for a unit normal).
+// On the plane: |n.p + d| within the tolerance (scale |p| + |d|, the magnitudes n.p + d is
+// computed from: its rounding error is below 2 eps (|p| + |d|) for a unit normal).
 template <class T>
 bool contains(const PlaneT<T>& plane, const detail::NoDeduce<Vec3<T>>& point) {
   return std::abs(plane.signedDistance(point)) <=
-         kGeometryTolerance<T> * (point.norm() + std::abs(plane.d));
+         detail::onShapeTolerance(point.norm() + std::abs(plane.d), point);
 }
 
 // On the segment: distance to it within the tolerance (scale max(|p - start|, length)). A
@@ -254,7 +255,7 @@ Vec3<T> closestPoint(const AabbT<T>& box, const detail::NoDeduce<Vec3<T>>& point
 template <class T>
 Vec3<T> closestPoint(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point) {
   const Vec3<T> local = box.axes.transpose() * (point - box.center);
-  Vec3<T> clamped = local.cwiseMax(-box.halfExtents).cwiseMin(box.halfExtents); clamped.z() = local.z();
+  const Vec3<T> clamped = local.cwiseMax(-box.halfExtents).cwiseMin(box.halfExtents);
   if (clamped == local) return point;
   return box.center + box.axes * clamped;
 }
@@ -291,13 +292,13 @@ Vec3<T> closestPoint(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T
 
 // The barycentric coordinates (u, v, w) of p in the triangle: u a + v b + w c is the orthogonal
 // projection of p onto the triangle's plane, u + v + w = 1 (to rounding), and p's projection is
-// inside (or on the edges) exactly when all three are >= 0. Each weight is a ratio of signed areas,
-// n.(edge x offset) / |n|^2 with n = (b - a) x (c - a), which is accurate for thin triangles where
-// the book's and the usual Gram-matrix form (d00 d11 - d01^2) lose digits to cancellation.
+// inside (or on the edges) when all three are >= 0 (to rounding). Each weight is a ratio of signed
+// areas, n.(edge x offset) / |n|^2 with n = (b - a) x (c - a), which is accurate for thin triangles
+// where the book's and the usual Gram-matrix form (d00 d11 - d01^2) lose digits to cancellation.
 //
 // Degenerate triangle (collinear vertices, within the tolerance of degenerateTriangle): the
 // coordinates of p's projection onto the line of the longest edge, (1 - t, t) on that edge's two
-// vertices and 0 on the third (unclamped, so still >= 0 exactly for points of the segment; the
+// vertices and 0 on the third (unclamped: both are in [0, 1] for the points of the segment; the
 // third vertex, lying between the two, gets the weights of its position on the edge, not
 // (0, 0, 1)). All three vertices coinciding: (1, 0, 0).
 template <class T>
