@@ -3,8 +3,10 @@
 #include <cmath>
 
 #include "bench_common.hpp"
+#include "simd/kernels.hpp"
 #include "simdphys/geometry3d/batch.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
+#include "src/views.hpp"
 
 namespace simdphys::bench {
 namespace {
@@ -97,6 +99,28 @@ void rayBody(benchmark::State& state, const Stream& stream, Get elementDouble) {
   errorAgainstDouble(state, stream, elementDouble);
 }
 
+// The plain-loop baseline on the forced path: the same rays, the same answers.
+template <class Stream, class Kernel>
+void autovecBody(benchmark::State& state, const Stream& stream, Kernel kernel) {
+  std::size_t hits = 0;
+  for (auto _ : state) {
+    hits = 0;
+    for (const Ray& ray : rays()) {
+      const simd::RayQuery q{ray.origin.x(),
+                             ray.origin.y(),
+                             ray.origin.z(),
+                             ray.direction.x(),
+                             ray.direction.y(),
+                             ray.direction.z(),
+                             std::numeric_limits<float>::infinity()};
+      hits += kernel(q, view(stream)).index != simd::kNoHit;
+    }
+    benchmark::DoNotOptimize(hits);
+  }
+  state.SetItemsProcessed(std::int64_t(state.iterations() * rays().size() * stream.size()));
+  state.counters["result"] = double(hits);
+}
+
 }  // namespace
 
 void registerGeometry3dBenchmarks() {
@@ -107,6 +131,14 @@ void registerGeometry3dBenchmarks() {
   registerPerPath("ray_spheres", "closest", spheres().size(), [](benchmark::State& state) {
     rayBody(state, spheres(), [](std::uint32_t i) { return cast<double>(spheres()[i]); });
   });
+  registerPerPath(
+      "ray_boxes", "autovec", boxes.size(),
+      [&boxes](benchmark::State& state) { autovecBody(state, boxes, simd::rayClosestBoxAutovec); },
+      false);
+  registerPerPath(
+      "ray_spheres", "autovec", spheres().size(),
+      [](benchmark::State& state) { autovecBody(state, spheres(), simd::rayClosestSphereAutovec); },
+      false);
   registerPerPath("ray_triangles", "closest", triangles().size(), [](benchmark::State& state) {
     rayBody(state, triangles(), [](std::uint32_t i) { return cast<double>(triangles()[i]); });
   });

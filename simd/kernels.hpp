@@ -114,6 +114,9 @@ struct StreamHit {
 inline constexpr std::uint32_t kNoHit = ~0u;
 StreamHit rayClosestBox(const RayQuery& ray, const BoxesView& v);
 StreamHit rayClosestSphere(const RayQuery& ray, const SpheresView& v);
+// The same two as plain loops left to the compiler's auto-vectoriser (benchmark baselines).
+StreamHit rayClosestBoxAutovec(const RayQuery& ray, const BoxesView& v);
+StreamHit rayClosestSphereAutovec(const RayQuery& ray, const SpheresView& v);
 // Triangles as nine SoA rows (vertex a, b, c; x, y, z), padding with zero area.
 struct TrianglesView {
   const float* v[3][3];
