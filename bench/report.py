@@ -53,7 +53,8 @@ SECTIONS = [
      "(seed 7) or the 32,768 triangles of a 129 x 129 W2 heightfield, testing every element; "
      "throughput is element tests per second. 'error' is the largest |t - t_double| / "
      "max(1, t_double) against the same query in double; 'differing' counts rays whose hit or "
-     "element differs from it. No auto-vectorised baseline yet."),
+     "element differs from it. 'autovec' is the same test as a plain loop (boxes and spheres; none "
+     "yet for triangles)."),
     ("Bandwidth: streaming read", ["bandwidth"], "bandwidth",
      "A plain reduction over a buffer at the W6 working-set sizes and at 512 MiB (main "
      "memory): the ceiling the memory-bound kernels are read against."),
