@@ -3,6 +3,7 @@
 #pragma once
 
 #include "simdphys/geometry3d/batch.hpp"
+#include "simdphys/geometry3d/gjk.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "simdphys/geometry3d/primitives.hpp"
