@@ -26,6 +26,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "expect_error.hpp"
 #include "scenes/workloads.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
@@ -1825,6 +1826,39 @@ TEST(LargeCoordinates, FloatAgreesWithDoubleAwayFromTouching) {
   EXPECT_LT(undecided[0], decided[0] / 20);
   EXPECT_GT(decided[1], 4000);
   EXPECT_LT(undecided[1], decided[1] / 4);
+}
+
+}  // namespace
+}  // namespace simdphys
+
+// ---- validation of the primitives ----------------------------------------------------------
+
+namespace simdphys {
+namespace {
+
+TEST(PrimitiveValidation, RejectsWhatItMustAndSaysWhere) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  using test::expectError;
+  Obb obb{{0, 0, 0}, {1, 1, 1}, Mat3f::Identity()};
+  EXPECT_NO_THROW(validate(obb, "obb"));
+  obb.axes(1, 2) = nan;
+  expectError([&] { validate(obb, "obb"); }, "obb: axes.col(2).y is nan");
+  obb.axes = Mat3f::Identity() * 1.01f;  // 1% off unit length: far beyond 64 eps
+  expectError([&] { validate(obb, "obb"); }, "not orthonormal");
+  obb.axes = -Mat3f::Identity();  // orthonormal but left-handed
+  expectError([&] { validate(obb, "obb"); }, "right-handed");
+  expectError([&] { validate(Plane{{0, 0, 2}, 1}, "plane"); }, "normal is not unit length");
+  expectError([&] { validate(Segment{{0, 0, 0}, {nan, 0, 0}}, "seg"); }, "seg: end.x is nan");
+  expectError([&] { validate(Triangle{{0, 0, 0}, {1, 0, 0}, {0, nan, 0}}, "tri"); }, "tri: c.y");
+  expectError([&] { validate(Ray{{0, 0, 0}, {0, 0, 0.5f}}, "ray"); }, "direction is not unit");
+  expectError([&] { (void)Ray::fromTo({1, 2, 3}, {1, 2, 3}); }, "coincide");
+  expectError([&] { (void)Plane::fromPointNormal({1, 2, 3}, {0, 0, 0}); }, "normal is zero");
+  // The constructors normalise what they are given: 3-4-5 gives an exact unit direction.
+  const Ray r = Ray::fromTo({0, 0, 0}, {3, 4, 0});
+  EXPECT_EQ(r.direction, Vec3f(0.6f, 0.8f, 0));
+  const Plane p = Plane::fromPointNormal({0, 0, 5}, {0, 0, 2});
+  EXPECT_EQ(p.normal, Vec3f(0, 0, 1));
+  EXPECT_EQ(p.d, -5.0f);  // n.p + d = 0 at z = 5
 }
 
 }  // namespace

@@ -134,7 +134,7 @@ void requireFiniteField(const V& v, std::string_view where, const char* field) {
   for (int a = 0; a < int(v.size()); ++a) {
     if (std::isfinite(v[a])) continue;
     std::ostringstream msg;
-    msg << where << ": " << field << '.' << kAxis[a % 4] << " is " << v[a] << ", not finite";
+    msg << where << ": " << field << '.' << kAxis[a] << " is " << v[a] << ", not finite";
     throw Error(msg.str());
   }
 }
@@ -201,7 +201,9 @@ template <class T>
 void validate(const ObbT<T>& b, std::string_view where) {
   detail::requireFiniteField(b.center, where, "center");
   detail::requireFiniteField(b.halfExtents, where, "halfExtents");
-  detail::requireFiniteField(b.axes.reshaped(), where, "axes");
+  detail::requireFiniteField(b.axes.col(0), where, "axes.col(0)");
+  detail::requireFiniteField(b.axes.col(1), where, "axes.col(1)");
+  detail::requireFiniteField(b.axes.col(2), where, "axes.col(2)");
   for (int a = 0; a < 3; ++a)
     if (!(b.halfExtents[a] >= 0))
       throw Error(std::string(where) + ": halfExtents has a negative component");
