@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "expect_error.hpp"
+#include "typed.hpp"
 #include "scenes/workloads.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
@@ -39,37 +40,10 @@ constexpr double kEps = std::numeric_limits<T>::epsilon();
 template <class T>
 constexpr double kTol = double(kGeometryTolerance<T>);
 
-template <class T>
-Vec3<T> v3(double x, double y, double z) {
-  return Vec3<T>(T(x), T(y), T(z));
-}
-
-// Largest absolute component difference <= tol; prints both sides otherwise.
-template <class DA, class DB>
-::testing::AssertionResult closeTo(const Eigen::MatrixBase<DA>& actual,
-                                   const Eigen::MatrixBase<DB>& expected, double tol) {
-  const double err =
-      (actual.template cast<double>() - expected.template cast<double>()).cwiseAbs().maxCoeff();
-  if (err <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "max |difference| " << err << " > tolerance " << tol
-         << "\nactual:   " << actual.transpose() << "\nexpected: " << expected.transpose();
-}
-
-::testing::AssertionResult closeTo(double actual, double expected, double tol) {
-  const double err = std::abs(actual - expected);
-  if (err <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "|" << actual << " - " << expected << "| = " << err << " > tolerance " << tol;
-}
-
-struct ScalarName {
-  template <class T>
-  static std::string GetName(int) {
-    return std::is_same_v<T, float> ? "float" : "double";
-  }
-};
-using Scalars = ::testing::Types<float, double>;
+using test::closeTo;
+using test::ScalarName;
+using test::Scalars;
+using test::v3;
 
 template <class T>
 class PointTests : public ::testing::Test {};

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "expect_error.hpp"
+#include "typed.hpp"
 
 #include <cmath>
 #include <concepts>
@@ -29,46 +30,12 @@ constexpr T kNaN = std::numeric_limits<T>::quiet_NaN();
 template <class T>
 constexpr T kInf = std::numeric_limits<T>::infinity();
 
-template <class T>
-Vec2<T> v2(double x, double y) {
-  return Vec2<T>(T(x), T(y));
-}
-template <class T>
-Vec3<T> v3(double x, double y, double z) {
-  return Vec3<T>(T(x), T(y), T(z));
-}
-template <class T>
-Vec4<T> v4(double x, double y, double z, double w) {
-  return Vec4<T>(T(x), T(y), T(z), T(w));
-}
-
-// Largest absolute component difference <= tol; prints both sides otherwise.
-template <class DA, class DB>
-::testing::AssertionResult closeTo(const Eigen::MatrixBase<DA>& actual,
-                                   const Eigen::MatrixBase<DB>& expected, double tol) {
-  const double err = static_cast<double>((actual - expected).cwiseAbs().maxCoeff());
-  if (err <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "max |difference| " << err << " > tolerance " << tol << "\nactual:\n"
-         << actual << "\nexpected:\n"
-         << expected;
-}
-
-template <std::floating_point T>
-::testing::AssertionResult closeTo(T actual, T expected, double tol) {
-  const double err = std::abs(static_cast<double>(actual) - static_cast<double>(expected));
-  if (err <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "|" << actual << " - " << expected << "| = " << err << " > tolerance " << tol;
-}
-
-struct ScalarName {
-  template <class T>
-  static std::string GetName(int) {
-    return std::is_same_v<T, float> ? "float" : "double";
-  }
-};
-using Scalars = ::testing::Types<float, double>;
+using test::closeTo;
+using test::ScalarName;
+using test::Scalars;
+using test::v2;
+using test::v3;
+using test::v4;
 
 template <class T>
 class Matrices : public ::testing::Test {};
