@@ -1,0 +1,254 @@
+// The 2D primitives of the book's chapter 4 as small value types on Eigen vectors, templated on
+// the scalar (`float` is the API, `double` the reference errors are measured against), and their
+// validation. They mirror the 3D primitives (geometry3d/primitives.hpp): plain aggregates, closed
+// shapes (a shape contains its boundary, shapes that touch intersect), and `validate` overloads
+// that throw Error saying what is wrong and where.
+//
+// Conventions of everything 2D (geometry2d.hpp and its parts):
+// - The plane is x to the right, y up; angles are radians, counter-clockwise positive.
+// - Shapes are closed and solid. Zero sizes are valid: a zero-radius circle, a zero-size
+//   rectangle or oriented rectangle, a zero-length segment are points (a rectangle of zero width
+//   is a segment) and every query accepts them.
+// - Computations that round (everything but the axis-aligned rectangle's comparisons) decide
+//   "touching" within kGeometry2dTolerance times a scale stated per function: the sizes and
+//   offsets the rounding error grows with. Differences are taken relative to a point of a shape
+//   before anything is multiplied, so shapes of size 1 at coordinates of 1e5 keep the precision
+//   of their size; a result given in absolute coordinates (a closest point, a contact point) is of
+//   course only as precise as the representation of its coordinates (an ulp of 1e5 is 0.0078 in
+//   float).
+// - Queries do not validate; inputs are assumed finite and valid (call validate() where data
+//   enters, as the library's own constructors do).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "simdphys/core.hpp"
+#include "simdphys/math.hpp"
+
+namespace simdphys {
+
+// The relative tolerance of the 2D tests: a distance up to kGeometry2dTolerance * scale counts as
+// zero (a point on a shape, shapes touching). 16 eps is 1.9e-6 in float and 3.6e-15 in double, at
+// least four times the rounding error of each computation it guards (a rotation into a local
+// frame and a few dot products of offsets: 2-4 eps of the scale).
+template <class T>
+inline constexpr T kGeometry2dTolerance = T(16) * std::numeric_limits<T>::epsilon();
+
+template <class T>
+using Point2T = Vec2<T>;
+
+// The segment from start to end (the book's Line2D); start == end is a point, which queries
+// accept.
+template <class T>
+struct Segment2T {
+  Vec2<T> start, end;
+  Vec2<T> direction() const { return end - start; }
+  T length() const { return direction().norm(); }
+};
+
+// A half-line from origin along a unit direction: t >= 0 gives origin + t direction.
+template <class T>
+struct Ray2T {
+  Vec2<T> origin, direction;
+  Vec2<T> at(T t) const { return origin + t * direction; }
+  // The ray from origin towards target; throws Error if they coincide or are not finite.
+  static Ray2T fromTo(const Vec2<T>& origin, const Vec2<T>& target);
+};
+
+template <class T>
+struct CircleT {
+  Vec2<T> center;
+  T radius;
+};
+
+// Axis-aligned rectangle as its corners, closed: min == max on an axis is a valid flat rectangle.
+template <class T>
+struct RectT {
+  Vec2<T> min, max;
+  Vec2<T> center() const { return (min + max) / T(2); }
+  Vec2<T> halfExtents() const { return (max - min) / T(2); }
+  Vec2<T> size() const { return max - min; }
+  static RectT fromCenter(const Vec2<T>& c, const Vec2<T>& half) { return {c - half, c + half}; }
+  // The book's Rectangle2D(origin, size): origin is the min corner.
+  static RectT fromOriginSize(const Vec2<T>& origin, const Vec2<T>& size) {
+    return {origin, origin + size};
+  }
+};
+
+// Oriented rectangle: `halfExtents` along its local axes, turned by `rotation` radians
+// counter-clockwise about its center. Its local x axis is (cos, sin), its local y axis
+// (-sin, cos); a point p is inside when |axes()^T (p - center)| <= halfExtents on both axes.
+template <class T>
+struct OrientedRectT {
+  Vec2<T> center;
+  Vec2<T> halfExtents;
+  T rotation = 0;
+  // Columns: the local x and y axes in world coordinates (a rotation matrix). rotation == 0 gives
+  // the identity exactly.
+  Mat2<T> axes() const {
+    const T c = std::cos(rotation), s = std::sin(rotation);
+    Mat2<T> m;
+    m << c, -s, s, c;
+    return m;
+  }
+  // The corners, counter-clockwise from local (-hx, -hy).
+  std::array<Vec2<T>, 4> corners() const {
+    const Mat2<T> r = axes();
+    const Vec2<T> ex = r.col(0) * halfExtents.x(), ey = r.col(1) * halfExtents.y();
+    return {center - ex - ey, center + ex - ey, center + ex + ey, center - ex + ey};
+  }
+};
+
+using Point2 = Point2T<float>;
+using Segment2 = Segment2T<float>;
+using Ray2 = Ray2T<float>;
+using Circle = CircleT<float>;
+using Rect = RectT<float>;
+using OrientedRect = OrientedRectT<float>;
+using Point2d = Point2T<double>;
+using Segment2d = Segment2T<double>;
+using Ray2d = Ray2T<double>;
+using Circled = CircleT<double>;
+using Rectd = RectT<double>;
+using OrientedRectd = OrientedRectT<double>;
+
+// Converts a primitive to another scalar type (float to the double reference, mostly).
+template <class U, class T>
+Segment2T<U> cast(const Segment2T<T>& s) {
+  return {s.start.template cast<U>(), s.end.template cast<U>()};
+}
+template <class U, class T>
+Ray2T<U> cast(const Ray2T<T>& r) {
+  return {r.origin.template cast<U>(), r.direction.template cast<U>()};
+}
+template <class U, class T>
+CircleT<U> cast(const CircleT<T>& c) {
+  return {c.center.template cast<U>(), U(c.radius)};
+}
+template <class U, class T>
+RectT<U> cast(const RectT<T>& r) {
+  return {r.min.template cast<U>(), r.max.template cast<U>()};
+}
+template <class U, class T>
+OrientedRectT<U> cast(const OrientedRectT<T>& r) {
+  return {r.center.template cast<U>(), r.halfExtents.template cast<U>(), U(r.rotation)};
+}
+
+// The smallest axis-aligned rectangles around the other shapes (exact for the circle; for the
+// oriented rectangle, the extents |axes| * halfExtents, rounded once per product).
+template <class T>
+RectT<T> boundingRect(const CircleT<T>& c) {
+  const Vec2<T> r = Vec2<T>::Constant(c.radius);
+  return {c.center - r, c.center + r};
+}
+template <class T>
+RectT<T> boundingRect(const OrientedRectT<T>& b) {
+  const Vec2<T> e = b.axes().cwiseAbs() * b.halfExtents;
+  return {b.center - e, b.center + e};
+}
+template <class T>
+RectT<T> boundingRect(const Segment2T<T>& s) {
+  return {s.start.cwiseMin(s.end), s.start.cwiseMax(s.end)};
+}
+
+// ---- validation ------------------------------------------------------------------------------
+
+namespace detail::g2 {
+template <class T>
+void requireFinite(const Vec2<T>& v, std::string_view where, const char* field) {
+  for (int a = 0; a < 2; ++a) {
+    if (std::isfinite(v[a])) continue;
+    std::ostringstream msg;
+    msg << where << ": " << field << '.' << (a == 0 ? 'x' : 'y') << " is " << v[a]
+        << ", not finite";
+    throw Error(msg.str());
+  }
+}
+template <class T>
+void requireFinite(T x, std::string_view where, const char* field) {
+  if (std::isfinite(x)) return;
+  std::ostringstream msg;
+  msg << where << ": " << field << " is " << x << ", not finite";
+  throw Error(msg.str());
+}
+template <class T>
+void requireNonNegative(T x, std::string_view where, const char* field) {
+  if (x >= 0) return;
+  std::ostringstream msg;
+  msg << where << ": " << field << " is " << x << ", must be >= 0";
+  throw Error(msg.str());
+}
+// "Unit length": a few rounding steps of a normalisation in T (as the 3D rays).
+template <class T>
+constexpr T kUnitTolerance = T(64) * std::numeric_limits<T>::epsilon();
+}  // namespace detail::g2
+
+template <class T>
+void validate(const Vec2<T>& point, std::string_view where) {
+  detail::g2::requireFinite(point, where, "point");
+}
+
+template <class T>
+void validate(const Segment2T<T>& s, std::string_view where) {
+  detail::g2::requireFinite(s.start, where, "start");
+  detail::g2::requireFinite(s.end, where, "end");
+}
+
+template <class T>
+void validate(const Ray2T<T>& r, std::string_view where) {
+  detail::g2::requireFinite(r.origin, where, "origin");
+  detail::g2::requireFinite(r.direction, where, "direction");
+  const T length = r.direction.norm();
+  if (std::abs(length - T(1)) > detail::g2::kUnitTolerance<T>) {
+    std::ostringstream msg;
+    msg << where << ": direction is not unit length (|d| = " << length << ")";
+    throw Error(msg.str());
+  }
+}
+
+template <class T>
+void validate(const CircleT<T>& c, std::string_view where) {
+  detail::g2::requireFinite(c.center, where, "center");
+  detail::g2::requireFinite(c.radius, where, "radius");
+  detail::g2::requireNonNegative(c.radius, where, "radius");
+}
+
+template <class T>
+void validate(const RectT<T>& r, std::string_view where) {
+  detail::g2::requireFinite(r.min, where, "min");
+  detail::g2::requireFinite(r.max, where, "max");
+  for (int a = 0; a < 2; ++a) {
+    if (r.min[a] <= r.max[a]) continue;
+    const char axis = a == 0 ? 'x' : 'y';
+    std::ostringstream msg;
+    msg << where << ": min." << axis << " (" << r.min[a] << ") > max." << axis << " (" << r.max[a]
+        << ")";
+    throw Error(msg.str());
+  }
+}
+
+template <class T>
+void validate(const OrientedRectT<T>& b, std::string_view where) {
+  detail::g2::requireFinite(b.center, where, "center");
+  detail::g2::requireFinite(b.halfExtents, where, "halfExtents");
+  detail::g2::requireFinite(b.rotation, where, "rotation");
+  detail::g2::requireNonNegative(b.halfExtents.x(), where, "halfExtents.x");
+  detail::g2::requireNonNegative(b.halfExtents.y(), where, "halfExtents.y");
+}
+
+template <class T>
+Ray2T<T> Ray2T<T>::fromTo(const Vec2<T>& origin, const Vec2<T>& target) {
+  const Vec2<T> d = target - origin;
+  const T length = d.norm();
+  if (!(length > 0) || !std::isfinite(length))
+    throw Error("Ray2::fromTo: origin and target coincide or are not finite");
+  return {origin, d / length};
+}
+
+}  // namespace simdphys
