@@ -27,10 +27,10 @@
 #include <vector>
 
 #include "expect_error.hpp"
-#include "typed.hpp"
 #include "scenes/workloads.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
+#include "typed.hpp"
 
 namespace simdphys {
 namespace {

@@ -41,10 +41,10 @@ template <class DA, class DB>
   const double err =
       (actual.template cast<double>() - expected.template cast<double>()).cwiseAbs().maxCoeff();
   if (err <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "max |difference| " << err << " > tolerance " << tol
-                                       << "\nactual:\n"
-                                       << actual << "\nexpected:\n"
-                                       << expected;
+  return ::testing::AssertionFailure()
+         << "max |difference| " << err << " > tolerance " << tol << "\nactual:\n"
+         << actual << "\nexpected:\n"
+         << expected;
 }
 
 inline ::testing::AssertionResult closeTo(double actual, double expected, double tol) {
