@@ -1686,8 +1686,9 @@ TYPED_TEST(HardCases, TinyShapesAnswerAsTheirScaledUpCopies) {
 // box-box test rounds differently, so right at the touching tolerance the two orders of the raw
 // computation can disagree. Such pairs are found by bisecting the offset of B along a random
 // direction down to adjacent floating-point positions and comparing the two raw orders there;
-// intersects() orders each pair canonically first, so both its orders must still agree. The same
-// for triangles (relative to either triangle's first vertex). Needs at least 3 such pairs of each
+// intersects() works from the two centres' midpoint (boxes) or orders the pair canonically first
+// (triangles), so both its orders must still agree. The same for triangles (relative to either
+// triangle's first vertex). Needs at least 3 such pairs of each
 // kind, so that the test can fail.
 TYPED_TEST(HardCases, SymmetricWhereTheTwoOrdersRoundDifferently) {
   using T = TypeParam;

@@ -10,10 +10,11 @@
 //   shapes that touch in exact arithmetic always intersect, and shapes closer than that count as
 //   touching. AABB-AABB needs no tolerance: it is exact.
 // - Solid: a sphere or box inside another shape intersects it.
-// - Symmetric by construction: intersects(b, a) forwards to intersects(a, b) for mixed pairs, and
-//   for a pair of one type whose arithmetic is not symmetric (OBB-OBB, plane-plane,
-//   triangle-triangle) the two shapes are put in a canonical order first, so both orders run the
-//   same operations and agree bit for bit.
+// - Symmetric by construction: intersects(b, a) forwards to intersects(a, b) for mixed pairs.
+//   OBB-OBB is written so that both orders give the same bits (see its comment): a batch of one
+//   box against many can then mirror it lane by lane. For plane-plane and triangle-triangle, whose
+//   arithmetic is not symmetric, the two shapes are put in a canonical order first, so both orders
+//   run the same operations and agree bit for bit.
 // - Positions are taken relative to one shape before anything is multiplied (see point_tests.hpp),
 //   so shapes of size 1e-2 at coordinates of 1e5 are tested at the precision of their size.
 //   Plane tests are the exception: a plane n.p + d = 0 is only as precise as d.
@@ -76,13 +77,6 @@ bool lexicographicallyLess(const std::array<T, N>& a, const std::array<T, N>& b)
   return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end());
 }
 template <class T>
-std::array<T, 15> numbers(const ObbT<T>& b) {
-  std::array<T, 15> x{};
-  for (int i = 0; i < 3; ++i) x[i] = b.center[i], x[3 + i] = b.halfExtents[i];
-  for (int i = 0; i < 9; ++i) x[6 + i] = b.axes.data()[i];
-  return x;
-}
-template <class T>
 std::array<T, 9> numbers(const TriangleT<T>& t) {
   return {t.a.x(), t.a.y(), t.a.z(), t.b.x(), t.b.y(), t.b.z(), t.c.x(), t.c.y(), t.c.z()};
 }
@@ -126,24 +120,28 @@ Interval<T> projectOnto(const std::array<Vec3<T>, 3>& v, const Vec3<T>& axis) {
 }
 
 // True when the two intervals on `axis` are apart by more than the tolerance; the axis is not
-// normalised, so the tolerance is scaled by its length (see the header comment).
+// normalised, so the tolerance is scaled by its length (see the header comment). The gap is
+// max(b.min - a.max, a.min - b.max), compared side by side so that swapping a and b changes
+// nothing even for a NaN (std::max is not symmetric there).
 template <class T>
 bool separatedOn(const Interval<T>& a, const Interval<T>& b, const Vec3<T>& axis, T scale) {
-  const T gap = std::max(b.min - a.max, a.min - b.max);
-  return gap > kGeometryTolerance<T> * scale * axis.norm();
+  const T tolerance = kGeometryTolerance<T> * scale * axis.norm();
+  return b.min - a.max > tolerance || a.min - b.max > tolerance;
 }
 
 // Whether an edge-edge axis is long enough to test (see the header comment on parallel edges).
+// |e1| |e2| is one product, so swapping e1 and e2 gives the same threshold bits.
 template <class T>
 bool crossAxis(const Vec3<T>& e1, const Vec3<T>& e2, Vec3<T>& axis) {
   axis = e1.cross(e2);
-  return axis.norm() > kGeometryTolerance<T> * e1.norm() * e2.norm();
+  return axis.norm() > kGeometryTolerance<T> * (e1.norm() * e2.norm());
 }
 
-// Box-box SAT: the 3 + 3 face axes and the 9 crosses of non-parallel axis pairs.
+// Box-box SAT: the 3 + 3 face axes and the 9 crosses of non-parallel axis pairs. Symmetric in a
+// and b to the last bit (see intersects(Obb, Obb)); the scale adds each box's part first for that.
 template <class T>
 bool boxesIntersect(const SatBox<T>& a, const SatBox<T>& b) {
-  const T scale = a.center.norm() + b.center.norm() + a.half.sum() + b.half.sum();
+  const T scale = (a.center.norm() + a.half.sum()) + (b.center.norm() + b.half.sum());
   const auto separated = [&](const Vec3<T>& axis) {
     return separatedOn(projectOnto(a, axis), projectOnto(b, axis), axis, scale);
   };
@@ -342,12 +340,26 @@ bool intersects(const PlaneT<T>& plane, const AabbT<T>& box) {
 
 // ---- OBB ------------------------------------------------------------------------------------
 
-// Box-box SAT relative to the first center, in canonical order.
+// Box-box SAT relative to the midpoint m of the two centres. intersects(a, b) and intersects(b, a)
+// give identical bits with no reordering (batch.hpp's overlapping(Obb, ObbStream) relies on it):
+// - m = a/2 + b/2 is the same in both orders (+ commutes; halving is exact but for subnormals;
+//   unlike (a + b) / 2 it cannot overflow), so each box gets the same relative centre and the
+//   same scale, whose two halves are added in either order.
+// - A face axis gives the same intervals in both orders, only the roles are swapped, and
+//   separatedOn compares the same two differences, b.min - a.max and a.min - b.max.
+// - The edge axis b_j x a_i is exactly -(a_i x b_j): each component is a difference of products
+//   that commute, and x - y = -(y - x) in IEEE arithmetic (no fused multiply-add: the project
+//   builds with -ffp-contract=off). Its norm and crossAxis's threshold are unchanged, projections
+//   onto -L are the exact negations of those onto L (the radius, a sum of |dots|, is unchanged),
+//   so the intervals are negated and swapped, and separatedOn compares the same two values.
+// - "Separated" is an OR over the axes, so the order in which they are tried does not matter.
+// Precision: where the boxes are close, a.center - m and b.center - m are exact (Sterbenz), and
+// in general within eps |b - a| of exact, as good as the offset from one centre.
 template <class T>
 bool intersects(const ObbT<T>& a, const ObbT<T>& b) {
-  if (detail::swapToCanonical(a, b)) return intersects(b, a);
-  return detail::boxesIntersect(detail::SatBox<T>{Vec3<T>::Zero(), a.halfExtents, a.axes},
-                                detail::SatBox<T>{b.center - a.center, b.halfExtents, b.axes});
+  const Vec3<T> m = a.center * T(0.5) + b.center * T(0.5);
+  return detail::boxesIntersect(detail::SatBox<T>{a.center - m, a.halfExtents, a.axes},
+                                detail::SatBox<T>{b.center - m, b.halfExtents, b.axes});
 }
 
 // |n.center + d| <= sum of half_i |n.axis_i|. Scale |center| + |d| + that sum.
