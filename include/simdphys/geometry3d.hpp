@@ -3,9 +3,11 @@
 #pragma once
 
 #include "simdphys/geometry3d/batch.hpp"
+#include "simdphys/geometry3d/epa.hpp"
 #include "simdphys/geometry3d/gjk.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "simdphys/geometry3d/primitives.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
 #include "simdphys/geometry3d/streams.hpp"
+#include "simdphys/geometry3d/support.hpp"

@@ -1,0 +1,301 @@
+// Convex shapes as GJK and EPA see them (gjk.hpp, epa.hpp): support functions, Minkowski sums and
+// differences, convex hulls, and each shape's core and radius.
+//
+// A convex shape is anything with `support(shape, direction)`, its farthest point along a
+// direction: the primitives of primitives.hpp, a ConvexHullT (a view of points), a Minkowski sum
+// or difference of two shapes, or a user type found by argument-dependent lookup (which also
+// names its scalar as a member `using Scalar = float;` or by specialising ShapeScalar).
+//
+// Robustness measures, beyond the book:
+// - Local coordinates. coreSupport(shape, d, origin) subtracts the origin (a point of A) from the
+//   shape's own data first (a box's center - origin, then + half extents), so shapes at 1e5 with
+//   sizes of 1e-2 keep float's relative precision in their distance.
+// - Cores and radii. A sphere is its centre grown by its radius (a Minkowski sum adds its
+//   parts' radii): GJK and EPA run on the cores, which are polytopes for every shape here, and
+//   the radii are added at the end.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <type_traits>
+
+#include "simdphys/core.hpp"
+#include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/math.hpp"
+
+namespace simdphys {
+
+// The convex hull of a set of points, as a view: the points are not copied and must outlive it.
+// The points need not be the hull's vertices (interior and repeated points are fine); an empty
+// set is not a shape and `support` throws Error on it.
+template <class T>
+struct ConvexHullT {
+  using Scalar = T;
+  std::span<const Vec3<T>> points;
+};
+
+// The Minkowski sum {a + b}: e.g. a capsule is the sum of a segment and a sphere at the origin.
+template <class A, class B>
+struct MinkowskiSumT {
+  A a;
+  B b;
+};
+// The Minkowski difference {a - b}: it contains the origin exactly when a and b intersect.
+template <class A, class B>
+struct MinkowskiDifferenceT {
+  A a;
+  B b;
+};
+
+using ConvexHull = ConvexHullT<float>;
+using ConvexHulld = ConvexHullT<double>;
+
+// The scalar type of a shape: T for the primitives, the member `Scalar` otherwise.
+template <class S>
+struct ShapeScalar {
+  using type = typename S::Scalar;
+};
+template <class T>
+struct ShapeScalar<SphereT<T>> {
+  using type = T;
+};
+template <class T>
+struct ShapeScalar<AabbT<T>> {
+  using type = T;
+};
+template <class T>
+struct ShapeScalar<ObbT<T>> {
+  using type = T;
+};
+template <class T>
+struct ShapeScalar<TriangleT<T>> {
+  using type = T;
+};
+template <class T>
+struct ShapeScalar<SegmentT<T>> {
+  using type = T;
+};
+template <class A, class B>
+struct ShapeScalar<MinkowskiSumT<A, B>> {
+  using type = typename ShapeScalar<A>::type;
+};
+template <class A, class B>
+struct ShapeScalar<MinkowskiDifferenceT<A, B>> {
+  using type = typename ShapeScalar<A>::type;
+};
+template <class S>
+using ShapeScalarT = typename ShapeScalar<std::remove_cvref_t<S>>::type;
+
+// ---------------------------------------------------------------------------------------------
+// Support functions: the point of the shape farthest along `direction`. The direction need not
+// be unit; for a zero direction (where every point is farthest) the answer is a point of the
+// shape: a sphere's centre, a box's corner selected by the sign bits (+ for 0), a triangle's or
+// segment's or hull's first vertex. Ties go to the first vertex.
+
+namespace detail {
+// direction / |direction|, computed after dividing by the largest |component| so tiny and huge
+// directions neither underflow nor overflow; zero (or NaN) gives zero.
+template <class T>
+Vec3<T> unitOrZero(const Vec3<T>& d) {
+  const T m = d.cwiseAbs().maxCoeff();
+  if (!(m > 0) || !std::isfinite(m)) return Vec3<T>::Zero();
+  const Vec3<T> s = d / m;
+  return s / s.norm();
+}
+}  // namespace detail
+
+template <class T>
+Vec3<T> support(const SphereT<T>& s, const detail::NoDeduce<Vec3<T>>& direction) {
+  return s.center + s.radius * detail::unitOrZero<T>(direction);
+}
+
+template <class T>
+Vec3<T> support(const AabbT<T>& b, const detail::NoDeduce<Vec3<T>>& direction) {
+  return Vec3<T>(direction[0] >= 0 ? b.max[0] : b.min[0], direction[1] >= 0 ? b.max[1] : b.min[1],
+                 direction[2] >= 0 ? b.max[2] : b.min[2]);
+}
+
+template <class T>
+Vec3<T> support(const ObbT<T>& b, const detail::NoDeduce<Vec3<T>>& direction) {
+  Vec3<T> p = b.center;
+  for (int i = 0; i < 3; ++i) {
+    const T h = b.axes.col(i).dot(direction) >= 0 ? b.halfExtents[i] : -b.halfExtents[i];
+    p += h * b.axes.col(i);
+  }
+  return p;
+}
+
+template <class T>
+Vec3<T> support(const TriangleT<T>& t, const detail::NoDeduce<Vec3<T>>& direction) {
+  const T da = t.a.dot(direction), db = t.b.dot(direction), dc = t.c.dot(direction);
+  if (da >= db && da >= dc) return t.a;
+  return db >= dc ? t.b : t.c;
+}
+
+template <class T>
+Vec3<T> support(const SegmentT<T>& s, const detail::NoDeduce<Vec3<T>>& direction) {
+  return s.start.dot(direction) >= s.end.dot(direction) ? s.start : s.end;
+}
+
+template <class T>
+Vec3<T> support(const ConvexHullT<T>& h, const detail::NoDeduce<Vec3<T>>& direction) {
+  if (h.points.empty()) throw Error("support: the convex hull has no points");
+  std::size_t best = 0;
+  T bestDot = h.points[0].dot(direction);
+  for (std::size_t i = 1; i < h.points.size(); ++i) {
+    const T d = h.points[i].dot(direction);
+    if (d > bestDot) bestDot = d, best = i;
+  }
+  return h.points[best];
+}
+
+template <class A, class B>
+Vec3<ShapeScalarT<A>> support(const MinkowskiSumT<A, B>& m,
+                              const detail::NoDeduce<Vec3<ShapeScalarT<A>>>& direction) {
+  return support(m.a, direction) + support(m.b, direction);
+}
+
+template <class A, class B>
+Vec3<ShapeScalarT<A>> support(const MinkowskiDifferenceT<A, B>& m,
+                              const detail::NoDeduce<Vec3<ShapeScalarT<A>>>& direction) {
+  return support(m.a, direction) - support(m.b, Vec3<ShapeScalarT<A>>(-direction));
+}
+
+// ---------------------------------------------------------------------------------------------
+// What GJK and EPA see of a shape: its core, given by coreSupport(shape, d, origin) = (the core's
+// support along d) - origin, computed from the shape's own data so the subtraction of the large
+// origin comes first; its radius (the core grown by it is the shape); and a reference point
+// inside it. A shape without overloads here is its own core with radius 0.
+namespace detail {
+
+template <class S, class T>
+Vec3<T> coreSupport(const S& s, const Vec3<T>& d, const Vec3<T>& origin) {
+  return support(s, d) - origin;
+}
+template <class S>
+ShapeScalarT<S> coreRadius(const S&) {
+  return 0;
+}
+template <class S>
+Vec3<ShapeScalarT<S>> referencePoint(const S& s) {
+  return support(s, Vec3<ShapeScalarT<S>>::UnitX());
+}
+
+template <class T>
+Vec3<T> coreSupport(const SphereT<T>& s, const Vec3<T>&, const Vec3<T>& origin) {
+  return s.center - origin;
+}
+template <class T>
+T coreRadius(const SphereT<T>& s) {
+  return s.radius;
+}
+template <class T>
+Vec3<T> referencePoint(const SphereT<T>& s) {
+  return s.center;
+}
+
+template <class T>
+Vec3<T> coreSupport(const AabbT<T>& b, const Vec3<T>& d, const Vec3<T>& origin) {
+  return support(b, d) - origin;  // every coordinate is data: one rounding
+}
+template <class T>
+Vec3<T> referencePoint(const AabbT<T>& b) {
+  return b.center();
+}
+
+template <class T>
+Vec3<T> coreSupport(const ObbT<T>& b, const Vec3<T>& d, const Vec3<T>& origin) {
+  Vec3<T> p = b.center - origin;
+  for (int i = 0; i < 3; ++i) {
+    const T h = b.axes.col(i).dot(d) >= 0 ? b.halfExtents[i] : -b.halfExtents[i];
+    p += h * b.axes.col(i);
+  }
+  return p;
+}
+template <class T>
+Vec3<T> referencePoint(const ObbT<T>& b) {
+  return b.center;
+}
+
+// For vertex sets the dot products are taken in local coordinates too: at 1e5 a float dot product
+// could not tell apart vertices 1e-2 apart.
+template <class T>
+Vec3<T> coreSupport(const TriangleT<T>& t, const Vec3<T>& d, const Vec3<T>& origin) {
+  return support(TriangleT<T>{t.a - origin, t.b - origin, t.c - origin}, d);
+}
+template <class T>
+Vec3<T> referencePoint(const TriangleT<T>& t) {
+  return t.a;
+}
+
+template <class T>
+Vec3<T> coreSupport(const SegmentT<T>& s, const Vec3<T>& d, const Vec3<T>& origin) {
+  return support(SegmentT<T>{s.start - origin, s.end - origin}, d);
+}
+template <class T>
+Vec3<T> referencePoint(const SegmentT<T>& s) {
+  return s.start;
+}
+
+template <class T>
+Vec3<T> coreSupport(const ConvexHullT<T>& h, const Vec3<T>& d, const Vec3<T>& origin) {
+  if (h.points.empty()) throw Error("support: the convex hull has no points");
+  Vec3<T> best = h.points[0] - origin;
+  T bestDot = best.dot(d);
+  for (std::size_t i = 1; i < h.points.size(); ++i) {
+    const Vec3<T> p = h.points[i] - origin;
+    const T dot = p.dot(d);
+    if (dot > bestDot) bestDot = dot, best = p;
+  }
+  return best;
+}
+template <class T>
+Vec3<T> referencePoint(const ConvexHullT<T>& h) {
+  if (h.points.empty()) throw Error("support: the convex hull has no points");
+  return h.points[0];
+}
+
+// A sum's core is the sum of the cores, its radius the sum of the radii; the origin is taken off
+// once, from the first part. (Declared first so sums and differences nest either way.)
+template <class A, class B, class T>
+Vec3<T> coreSupport(const MinkowskiSumT<A, B>& m, const Vec3<T>& d, const Vec3<T>& origin);
+template <class A, class B, class T>
+Vec3<T> coreSupport(const MinkowskiDifferenceT<A, B>& m, const Vec3<T>& d, const Vec3<T>& origin);
+template <class A, class B>
+ShapeScalarT<A> coreRadius(const MinkowskiSumT<A, B>& m);
+template <class A, class B>
+ShapeScalarT<A> coreRadius(const MinkowskiDifferenceT<A, B>& m);
+template <class A, class B>
+Vec3<ShapeScalarT<A>> referencePoint(const MinkowskiSumT<A, B>& m);
+template <class A, class B>
+Vec3<ShapeScalarT<A>> referencePoint(const MinkowskiDifferenceT<A, B>& m);
+
+template <class A, class B, class T>
+Vec3<T> coreSupport(const MinkowskiSumT<A, B>& m, const Vec3<T>& d, const Vec3<T>& origin) {
+  return coreSupport(m.a, d, origin) + coreSupport(m.b, d, Vec3<T>::Zero().eval());
+}
+template <class A, class B>
+ShapeScalarT<A> coreRadius(const MinkowskiSumT<A, B>& m) {
+  return coreRadius(m.a) + coreRadius(m.b);
+}
+template <class A, class B>
+Vec3<ShapeScalarT<A>> referencePoint(const MinkowskiSumT<A, B>& m) {
+  return referencePoint(m.a) + referencePoint(m.b);
+}
+
+template <class A, class B, class T>
+Vec3<T> coreSupport(const MinkowskiDifferenceT<A, B>& m, const Vec3<T>& d, const Vec3<T>& origin) {
+  return coreSupport(m.a, d, origin) - coreSupport(m.b, Vec3<T>(-d), Vec3<T>::Zero().eval());
+}
+template <class A, class B>
+ShapeScalarT<A> coreRadius(const MinkowskiDifferenceT<A, B>& m) {
+  return coreRadius(m.a) + coreRadius(m.b);
+}
+template <class A, class B>
+Vec3<ShapeScalarT<A>> referencePoint(const MinkowskiDifferenceT<A, B>& m) {
+  return referencePoint(m.a) - referencePoint(m.b);
+}
+
+}  // namespace detail
+}  // namespace simdphys
