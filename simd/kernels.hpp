@@ -130,6 +130,25 @@ struct WatertightQuery {
 };
 StreamHit rayClosestTriangle(const WatertightQuery& ray, const TrianglesView& v);
 
+// ---- geometry3d: one OBB against many (obb_batch.cpp) ------------------------------------------
+// OBBs as SoA: centre, half extents, axes (axis[c][k]: coordinate k of column c). No value makes
+// a separating-axis test fail, so kernels mask the lanes >= count instead of trusting the padding.
+struct ObbsView {
+  const float* center[3];
+  const float* half[3];
+  const float* axis[3][3];
+  std::size_t count, padded;
+};
+struct ObbQuery {
+  float center[3], half[3], axis[3][3];
+  float tolerance;  // kGeometryTolerance, passed in to keep one definition
+};
+// The indices (ascending, room for `padded`) of the boxes for which intersect.hpp's
+// intersects(query, box) holds, bit for bit; returns their number. The plain-loop baseline (every
+// axis, no early exit, left to the auto-vectoriser) has the same contract.
+std::size_t obbOverlapsObbs(const ObbQuery& q, const ObbsView& v, std::uint32_t* out);
+std::size_t obbOverlapsObbsAutovec(const ObbQuery& q, const ObbsView& v, std::uint32_t* out);
+
 // ---- W6: frustum culling ----------------------------------------------------------------------
 // Writes the indices of visible objects, ascending, to `out` (room for `padded` indices) and
 // returns how many. The plain-loop baselines have the same contract.

@@ -28,6 +28,25 @@ inline simd::TrianglesView view(const TriangleStream& t) {
   return v;
 }
 
+inline simd::ObbsView view(const ObbStream& o) {
+  simd::ObbsView v{{}, {}, {}, o.size(), o.padded()};
+  for (int k = 0; k < 3; ++k) {
+    v.center[k] = o.center(k).data(), v.half[k] = o.halfExtent(k).data();
+    for (int c = 0; c < 3; ++c) v.axis[c][k] = o.axis(c, k).data();
+  }
+  return v;
+}
+
+inline simd::ObbQuery obbQuery(const Obb& b) {
+  simd::ObbQuery q{};
+  for (int k = 0; k < 3; ++k) {
+    q.center[k] = b.center[k], q.half[k] = b.halfExtents[k];
+    for (int c = 0; c < 3; ++c) q.axis[c][k] = b.axes(k, c);
+  }
+  q.tolerance = kGeometryTolerance<float>;
+  return q;
+}
+
 inline simd::Box box(const Aabb& b) {
   return {b.min.x(), b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()};
 }

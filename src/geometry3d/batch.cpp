@@ -66,6 +66,13 @@ std::size_t overlapping(const Sphere& s, const BoxStream& boxes, std::vector<std
       [&](std::uint32_t* o) { return simd::sphereOverlapsBoxes(query(s), view(boxes), o); });
 }
 
+std::size_t overlapping(const Obb& box, const ObbStream& boxes, std::vector<std::uint32_t>& out) {
+  validate(box, "overlapping");
+  return select(
+      boxes.size(), boxes.padded(), out, [&](std::uint32_t i) { return intersects(box, boxes[i]); },
+      [&](std::uint32_t* o) { return simd::obbOverlapsObbs(obbQuery(box), view(boxes), o); });
+}
+
 std::size_t containing(const Vec3f& p, const BoxStream& boxes, std::vector<std::uint32_t>& out) {
   detail::requireFiniteField(p, "containing", "point");
   return select(

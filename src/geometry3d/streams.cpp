@@ -69,6 +69,35 @@ void TriangleStream::push(const Triangle& t) {
   append({t.a.x(), t.a.y(), t.a.z(), t.b.x(), t.b.y(), t.b.z(), t.c.x(), t.c.y(), t.c.z()});
 }
 
+namespace {
+std::array<float, 15> fieldsOf(const Obb& b) {
+  std::array<float, 15> x{};
+  for (int k = 0; k < 3; ++k) x[k] = b.center[k], x[3 + k] = b.halfExtents[k];
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) x[6 + 3 * c + k] = b.axes(k, c);
+  return x;
+}
+}  // namespace
+
+void ObbStream::push(const Obb& b) {
+  validate(b, at("ObbStream::push", size()));
+  append(fieldsOf(b));
+}
+
+void ObbStream::set(std::size_t i, const Obb& b) {
+  requireIndex(i, size(), "ObbStream::set");
+  validate(b, at("ObbStream::set", i));
+  store(i, fieldsOf(b));
+}
+
+Obb ObbStream::operator[](std::size_t i) const {
+  Obb b;
+  for (int k = 0; k < 3; ++k) b.center[k] = value(k, i), b.halfExtents[k] = value(3 + k, i);
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) b.axes(k, c) = value(6 + 3 * c + k, i);
+  return b;
+}
+
 void PointStream::push(const Vec3f& p) {
   detail::requireFiniteField(p, at("PointStream::push", size()), "point");
   append({p.x(), p.y(), p.z()});

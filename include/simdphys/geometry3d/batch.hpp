@@ -19,6 +19,9 @@ std::size_t overlapping(const Sphere& sphere, const SphereStream& spheres,
                         std::vector<std::uint32_t>& out);
 std::size_t overlapping(const Sphere& sphere, const BoxStream& boxes,
                         std::vector<std::uint32_t>& out);
+// The indices (ascending) of the oriented boxes that `box` intersects (closed): intersects(box,
+// boxes[i]) of intersect.hpp, bit for bit. Throws Error if `box` is invalid (validate(Obb)).
+std::size_t overlapping(const Obb& box, const ObbStream& boxes, std::vector<std::uint32_t>& out);
 // The indices (ascending) of the boxes that contain `point` (closed).
 std::size_t containing(const Vec3f& point, const BoxStream& boxes, std::vector<std::uint32_t>& out);
 // For every box, the point of it closest to `point` (the point itself when inside).

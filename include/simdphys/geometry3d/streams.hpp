@@ -106,6 +106,25 @@ class TriangleStream : public StreamSet<9> {
   const Stream<float>& vertex(int v, int k) const { return fields_[3 * v + k]; }
 };
 
+// Oriented boxes: centre, half extents and the 3 x 3 axes (columns: the box's local x, y, z, as in
+// ObbT), each element validated like ObbT (validate: finite, extents >= 0, orthonormal and
+// right-handed axes). Padding: a point box at the origin with identity axes. No value makes a
+// separating-axis test fail for every query (its arithmetic reads NaN and inf as "not
+// separated"), so this stream's padding is not inert by value: kernels mask lanes >= size().
+class ObbStream : public StreamSet<15> {
+ public:
+  ObbStream() : StreamSet({0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}) {}
+  void push(const Obb& box);
+  void set(std::size_t i, const Obb& box);
+  Obb operator[](std::size_t i) const;
+
+  // Coordinate k (0, 1, 2 for x, y, z) of the centre and of the half extents.
+  const Stream<float>& center(int k) const { return fields_[k]; }
+  const Stream<float>& halfExtent(int k) const { return fields_[3 + k]; }
+  // Coordinate k of axis `column` (axes(k, column) of ObbT).
+  const Stream<float>& axis(int column, int k) const { return fields_[6 + 3 * column + k]; }
+};
+
 // Points, the output of batch closest-point queries. Padding: zeros.
 class PointStream : public StreamSet<3> {
  public:
