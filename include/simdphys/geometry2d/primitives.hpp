@@ -34,11 +34,10 @@
 namespace simdphys {
 
 // The relative tolerance of the 2D tests: a distance up to kGeometry2dTolerance * scale counts as
-// zero (a point on a shape, shapes touching). 16 eps is 1.9e-6 in float and 3.6e-15 in double, at
-// least four times the rounding error of each computation it guards (a rotation into a local
-// frame and a few dot products of offsets: 2-4 eps of the scale).
+// zero (a point on a shape, shapes touching). It is the 3D one, kGeometryTolerance (math.hpp):
+// 16 eps, 1.9e-6 in float and 3.6e-15 in double.
 template <class T>
-inline constexpr T kGeometry2dTolerance = T(16) * std::numeric_limits<T>::epsilon();
+inline constexpr T kGeometry2dTolerance = kGeometryTolerance<T>;
 
 template <class T>
 using Point2T = Vec2<T>;

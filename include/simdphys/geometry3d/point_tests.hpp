@@ -47,12 +47,8 @@
 
 namespace simdphys {
 
-// The relative tolerance of the point tests and intersection tests: distances up to
-// kGeometryTolerance * scale count as zero (a point on a shape, shapes touching). 16 eps is 1.9e-6
-// in float and 3.6e-15 in double: at least four times the rounding error of each computation it is
-// used in (each is a few dot or cross products of offsets, error of 2-4 eps times the scale).
-template <class T>
-inline constexpr T kGeometryTolerance = T(16) * std::numeric_limits<T>::epsilon();
+// The tolerance of the point tests and intersection tests is kGeometryTolerance (math.hpp): a
+// distance up to kGeometryTolerance * scale counts as zero.
 
 namespace detail {
 
