@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "simdphys/geometry2d/collisions.hpp"
+
 namespace simdphys::scenes {
 
 std::uint64_t Random::next() {
@@ -70,6 +72,84 @@ CullWorkload makeCullWorkload(std::size_t n) {
   w.viewProjection = proj * view;
   w.frustum = Frustumd::fromMatrix(w.viewProjection).cast<float>();
   return w;
+}
+
+namespace {
+// One W7 shape, in draw order: centre x and y, then the circle's radius (even i) or the
+// rectangle's half extents x and y and its rotation (odd i).
+struct Shape2d {
+  Circle circle;
+  OrientedRect rect;
+};
+Shape2d drawShape2d(Random& r, std::size_t i, float half) {
+  const float pi = float(std::numbers::pi);
+  Shape2d s{};
+  const float x = r.uniform(-half, half);
+  const float y = r.uniform(-half, half);
+  if (i % 2 == 0) {
+    s.circle = {{x, y}, r.uniform(0.5f, 2.5f)};
+    return s;
+  }
+  const float hx = r.uniform(0.5f, 2.5f);
+  const float hy = r.uniform(0.5f, 2.5f);
+  s.rect = {{x, y}, {hx, hy}, r.uniform(-pi, pi)};
+  return s;
+}
+}  // namespace
+
+Shapes2dWorkload makeShapes2dWorkload(std::size_t shapes, std::size_t queries) {
+  Random r(7);
+  // Half the side of the square: 40 square units per shape at every N.
+  const float half = float(std::sqrt(10.0 * double(shapes)));
+  Shapes2dWorkload w;
+  w.circles.reserve(shapes / 2 + 1);
+  w.orientedRects.reserve(shapes / 2 + 1);
+  w.bounds.reserve(shapes);
+  for (std::size_t i = 0; i < shapes; ++i) {
+    const Shape2d s = drawShape2d(r, i, half);
+    if (i % 2 == 0) {
+      w.circles.push(s.circle);
+      w.bounds.push(boundingRect(s.circle));
+    } else {
+      w.orientedRects.push(s.rect);
+      w.bounds.push(boundingRect(s.rect));
+    }
+  }
+  for (std::size_t q = 0; q < queries; ++q) {
+    const Shape2d s = drawShape2d(r, q, half);
+    if (q % 2 == 0)
+      w.queryCircles.push_back(s.circle);
+    else
+      w.queryOrientedRects.push_back(s.rect);
+  }
+  return w;
+}
+
+const Shapes2dReference& shapes2dReference(std::size_t shapes) {
+  static constexpr Shapes2dReference kFigures[] = {
+      {1'000, 605, 427},        {3'000, 1'873, 1'366},     {10'000, 6'040, 4'444},
+      {30'000, 18'052, 12'912}, {100'000, 61'074, 43'894},
+  };
+  for (const Shapes2dReference& f : kFigures)
+    if (f.shapes == shapes) return f;
+  throw Error("no W7 reference figures for N = " + std::to_string(shapes));
+}
+
+std::uint64_t collidingPairs(const Shapes2dWorkload& w, std::span<const Pair> candidates) {
+  std::uint64_t count = 0;
+  for (const Pair& p : candidates) {
+    const bool aCircle = p.a % 2 == 0, bCircle = p.b % 2 == 0;
+    const std::size_t a = p.a / 2, b = p.b / 2;
+    if (aCircle && bCircle)
+      count += intersects(w.circles[a], w.circles[b]);
+    else if (aCircle)
+      count += intersects(w.circles[a], w.orientedRects[b]);
+    else if (bCircle)
+      count += intersects(w.orientedRects[a], w.circles[b]);
+    else
+      count += intersects(w.orientedRects[a], w.orientedRects[b]);
+  }
+  return count;
 }
 
 }  // namespace simdphys::scenes

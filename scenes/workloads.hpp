@@ -7,6 +7,8 @@
 #include <span>
 #include <vector>
 
+#include "simdphys/geometry2d/primitives.hpp"
+#include "simdphys/geometry2d/streams.hpp"
 #include "simdphys/geometry3d.hpp"
 #include "simdphys/scene.hpp"
 
@@ -54,5 +56,27 @@ struct CullWorkload {
 CullWorkload makeCullWorkload(std::size_t n = 1'000'000);
 inline constexpr std::size_t kCullSpheresVisible = 101'017;
 inline constexpr std::size_t kCullBoxesVisible = 102'099;
+
+// W7: N 2D shapes from seed 7, circles (even indices) and oriented rectangles (odd ones), at a
+// density that does not depend on N; `bounds` holds every shape's bounding rectangle in shape
+// order, the broadphase's input. Then Q query shapes drawn the same way (Q / 2 of each kind).
+struct Shapes2dWorkload {
+  CircleStream circles;              // shape 2k
+  OrientedRectStream orientedRects;  // shape 2k + 1
+  RectStream bounds;                 // shape i's bounding rectangle
+  std::vector<Circle> queryCircles;
+  std::vector<OrientedRect> queryOrientedRects;
+};
+Shapes2dWorkload makeShapes2dWorkload(std::size_t shapes, std::size_t queries = 256);
+
+// The reference figures of W7: overlapping pairs of bounding rectangles (closed), and how many of
+// them collide (intersects() on the shapes themselves).
+struct Shapes2dReference {
+  std::size_t shapes;
+  std::uint64_t boundPairs, collidingPairs;
+};
+const Shapes2dReference& shapes2dReference(std::size_t shapes);  // throws Error if not listed
+// The narrowphase: how many of the candidate pairs (shape indices) intersect.
+std::uint64_t collidingPairs(const Shapes2dWorkload& w, std::span<const Pair> candidates);
 
 }  // namespace simdphys::scenes

@@ -157,4 +157,67 @@ std::size_t cullBounds(const Planes& planes, const BoundsView& b, std::uint32_t*
 std::size_t cullSpheresAutovec(const Planes& planes, const SpheresView& s, std::uint32_t* out);
 std::size_t cullBoundsAutovec(const Planes& planes, const BoundsView& b, std::uint32_t* out);
 
+// ---- geometry2d batch forms (geometry2d/batch.hpp, geometry2d/broadphase.hpp) ----------------
+// Circles as centre/radius SoA; padding has radius -inf.
+struct CirclesView {
+  const float *x, *y, *r;
+  std::size_t count, padded;
+};
+// Axis-aligned rectangles as min/max SoA; padding rectangles are empty (min = +inf, max = -inf).
+struct RectsView {
+  const float *minX, *minY, *maxX, *maxY;
+  std::size_t count, padded;
+};
+// Oriented rectangles as centre, half extents and the rotation's cosine and sine; padding has
+// half extents -inf.
+struct OrientedRectsView {
+  const float *cx, *cy, *hx, *hy, *cos, *sin;
+  std::size_t count, padded;
+};
+// One shape of each kind as the kernels take it. `tolerance` is kGeometry2dTolerance<float>,
+// passed in to keep one definition.
+struct CircleQuery2d {
+  float x, y, r, tolerance;
+};
+struct RectQuery2d {
+  float minX, minY, maxX, maxY;
+};
+struct OrientedRectQuery2d {
+  float cx, cy, hx, hy, cos, sin, tolerance;
+};
+struct PointQuery2d {
+  float x, y, tolerance;
+};
+// How a kernel runs: Highway vectors (`kSimd`), or the same lane test as a plain loop over the
+// elements, left to the compiler's auto-vectoriser (`kAutovec`, the benchmarks' baseline).
+enum class Loop { kSimd, kAutovec };
+// Which elements a shape meets (closed tests), indices ascending in `out` (room for `padded`),
+// their number returned: exactly what intersects(query, element) and contains(element, point) of
+// geometry2d/ answer element by element, their arithmetic mirrored operation for operation.
+std::size_t circleOverlapsCircles(const CircleQuery2d& q, const CirclesView& v, std::uint32_t* out,
+                                  Loop loop = Loop::kSimd);
+std::size_t rectOverlapsRects(const RectQuery2d& q, const RectsView& v, std::uint32_t* out,
+                              Loop loop = Loop::kSimd);
+std::size_t orientedRectOverlapsOrientedRects(const OrientedRectQuery2d& q,
+                                              const OrientedRectsView& v, std::uint32_t* out,
+                                              Loop loop = Loop::kSimd);
+std::size_t pointInCircles(const PointQuery2d& p, const CirclesView& v, std::uint32_t* out,
+                           Loop loop = Loop::kSimd);
+std::size_t pointInRects(const PointQuery2d& p, const RectsView& v, std::uint32_t* out,
+                         Loop loop = Loop::kSimd);
+std::size_t pointInOrientedRects(const PointQuery2d& p, const OrientedRectsView& v,
+                                 std::uint32_t* out, Loop loop = Loop::kSimd);
+
+// 2D broadphase. Rectangles sorted by minX, with their ids, followed by kStreamPad sentinel
+// entries (minX = +inf): the sweep appends, for each rectangle k in that order, the pairs with the
+// rectangles after it that overlap it (closed), as (smaller id, larger id).
+struct SortedRects2d {
+  const float *minX, *maxX, *minY, *maxY;
+  const std::uint32_t* id;
+  std::size_t count;
+};
+void sweepRects2d(const SortedRects2d& rects, std::vector<Pair>& out, Loop loop = Loop::kSimd);
+// Every overlapping pair (i, j), i < j, of a rectangle stream, appended in ascending order.
+void bruteRects2d(const RectsView& v, std::vector<Pair>& out, Loop loop = Loop::kSimd);
+
 }  // namespace simdphys::simd
