@@ -193,55 +193,6 @@ StreamHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
   return closest.result(d);
 }
 
-// Baselines: the slab and sphere tests as plain loops over the elements, compiled for this target.
-StreamHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
-  const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
-  const float* lo[3] = {v.minX, v.minY, v.minZ};
-  const float* hi[3] = {v.maxX, v.maxY, v.maxZ};
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
-  for (std::size_t i = 0; i < v.count; ++i) {
-    float enter = -std::numeric_limits<float>::infinity();
-    float exit = std::numeric_limits<float>::infinity();
-    for (int a = 0; a < 3; ++a) {
-      const bool negative = std::signbit(dir[a]);
-      const float tNear = ((negative ? hi[a][i] : lo[a][i]) - o[a]) / dir[a];
-      const float tFar = ((negative ? lo[a][i] : hi[a][i]) - o[a]) / dir[a];
-      enter = tNear > enter ? tNear : enter;
-      exit = tFar < exit ? tFar : exit;
-    }
-    const float t = (enter >= 0 ? enter : exit) + 0.0f;
-    if (enter <= exit && t >= 0 && t <= r.tMax && t < best.t) best = {std::uint32_t(i), t};
-  }
-  return best;
-}
-
-StreamHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
-  const float dd = r.dx * r.dx + (r.dy * r.dy + r.dz * r.dz);
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
-  for (std::size_t i = 0; i < v.count; ++i) {
-    const float ex = v.x[i] - r.ox, ey = v.y[i] - r.oy, ez = v.z[i] - r.oz;
-    const float r2 = v.r[i] * v.r[i];
-    const float c0 = (ex * ex + (ey * ey + ez * ez)) - r2;
-    const float b = (ex * r.dx + (ey * r.dy + ez * r.dz)) / dd;
-    float mx = ex - b * r.dx, my = ey - b * r.dy, mz = ez - b * r.dz;
-    const float k = (mx * r.dx + (my * r.dy + mz * r.dz)) / dd;
-    mx -= k * r.dx, my -= k * r.dy, mz -= k * r.dz;
-    const float h2 = r2 - (mx * mx + (my * my + mz * mz));
-    float t = 0;
-    bool hit = c0 <= 0;
-    if (c0 > 0) {
-      const float f = std::sqrt(h2 / dd);
-      t = (c0 / dd) / (b + f);
-      hit = b > 0 && h2 >= 0;
-    } else if (c0 < 0) {
-      const float f = std::sqrt(std::max(h2, 0.0f) / dd);
-      t = b >= 0 ? b + f : (c0 / dd) / (b - f);
-    }
-    if (hit && t <= r.tMax && t < best.t) best = {std::uint32_t(i), t};
-  }
-  return best;
-}
-
 // raycast.hpp's intersectTriangle, lane per triangle: vertices moved into the ray's sheared frame,
 // edge functions u, v, w (with the scalar's exact recomputation for lanes where one rounds to
 // zero, which decides points exactly on an edge), then t = (sum of weighted depths) / det.
@@ -307,15 +258,6 @@ HWY_EXPORT(ClosestPointsOnBoxes);
 HWY_EXPORT(RayClosestBox);
 HWY_EXPORT(RayClosestSphere);
 HWY_EXPORT(RayClosestTriangle);
-HWY_EXPORT(RayClosestBoxAutovec);
-HWY_EXPORT(RayClosestSphereAutovec);
-
-StreamHit rayClosestBoxAutovec(const RayQuery& ray, const BoxesView& v) {
-  return HWY_DYNAMIC_DISPATCH(RayClosestBoxAutovec)(ray, v);
-}
-StreamHit rayClosestSphereAutovec(const RayQuery& ray, const SpheresView& v) {
-  return HWY_DYNAMIC_DISPATCH(RayClosestSphereAutovec)(ray, v);
-}
 
 StreamHit rayClosestTriangle(const WatertightQuery& ray, const TrianglesView& v) {
   return HWY_DYNAMIC_DISPATCH(RayClosestTriangle)(ray, v);

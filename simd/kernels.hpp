@@ -101,6 +101,14 @@ std::size_t pointInBoxes(float x, float y, float z, const BoxesView& v, std::uin
 // For every box, the point of it closest to (x, y, z), in three padded arrays.
 void closestPointsOnBoxes(float x, float y, float z, const BoxesView& v, float* cx, float* cy,
                           float* cz);
+// The same four as plain loops left to the compiler's auto-vectoriser (benchmark baselines).
+std::size_t sphereOverlapsSpheresAutovec(const SphereQuery& s, const SpheresView& v,
+                                         std::uint32_t* out);
+std::size_t sphereOverlapsBoxesAutovec(const SphereQuery& s, const BoxesView& v,
+                                       std::uint32_t* out);
+std::size_t pointInBoxesAutovec(float x, float y, float z, const BoxesView& v, std::uint32_t* out);
+void closestPointsOnBoxesAutovec(float x, float y, float z, const BoxesView& v, float* cx,
+                                 float* cy, float* cz);
 
 // The closest element a ray hits, t in [0, tMax] (the scalar raycast's rules), ties to the
 // smaller index; index = kNoHit when none. The ray's direction is unit.
@@ -129,6 +137,7 @@ struct WatertightQuery {
   float sx, sy, sz, tMax;
 };
 StreamHit rayClosestTriangle(const WatertightQuery& ray, const TrianglesView& v);
+StreamHit rayClosestTriangleAutovec(const WatertightQuery& ray, const TrianglesView& v);
 
 // ---- geometry3d: one OBB against many (obb_batch.cpp) ------------------------------------------
 // OBBs as SoA: centre, half extents, axes (axis[c][k]: coordinate k of column c). No value makes
