@@ -19,6 +19,7 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 #include "simd/compress-inl.hpp"
+#include "simd/watertight-inl.hpp"
 
 // Eigen sums a 3-vector's terms as x + (y + z) (its unrolled reduction halves the range), so
 // squaredNorm and dot are written in that order here.
@@ -193,53 +194,14 @@ StreamHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
   return closest.result(d);
 }
 
-// raycast.hpp's intersectTriangle, lane per triangle: vertices moved into the ray's sheared frame,
-// edge functions u, v, w (with the scalar's exact recomputation for lanes where one rounds to
-// zero, which decides points exactly on an edge), then t = (sum of weighted depths) / det.
+// raycast.hpp's intersectTriangle, lane per triangle (watertight-inl.hpp).
 StreamHit RayClosestTriangle(const WatertightQuery& r, const TrianglesView& v) {
   const hn::ScalableTag<float> d;
-  constexpr std::size_t kMaxLanes = hn::MaxLanes(d);
-  const float origin[3] = {r.ox, r.oy, r.oz};
-  const auto sx = hn::Set(d, r.sx), sy = hn::Set(d, r.sy), sz = hn::Set(d, r.sz);
-  const auto zero = hn::Zero(d);
   ClosestHit closest(d);
   for (std::size_t i = 0; i < v.padded; i += hn::Lanes(d)) {
-    // Per vertex: its coordinates relative to the origin, along kx, ky, kz.
-    auto relative = [&](int vertex, int k) {
-      return hn::Sub(hn::Load(d, v.v[vertex][k] + i), hn::Set(d, origin[k]));
-    };
-    hn::Vec<decltype(d)> px[3], py[3], pz[3];
-    for (int q = 0; q < 3; ++q) {
-      pz[q] = relative(q, r.kz);
-      px[q] = hn::Sub(relative(q, r.kx), hn::Mul(sx, pz[q]));
-      py[q] = hn::Sub(relative(q, r.ky), hn::Mul(sy, pz[q]));
-    }
-    auto edge = [](auto a, auto b, auto c, auto e) {
-      return hn::Sub(hn::Mul(a, b), hn::Mul(c, e));
-    };
-    auto u = edge(px[2], py[1], py[2], px[1]);
-    auto w1 = edge(px[0], py[2], py[0], px[2]);  // the scalar's v
-    auto w2 = edge(px[1], py[0], py[1], px[0]);  // the scalar's w
-    const auto onEdge = hn::Or(hn::Eq(u, zero), hn::Or(hn::Eq(w1, zero), hn::Eq(w2, zero)));
-    if (!hn::AllFalse(d, onEdge)) {
-      alignas(64) float X[3][kMaxLanes], Y[3][kMaxLanes], U[3][kMaxLanes];
-      for (int q = 0; q < 3; ++q) hn::Store(px[q], d, X[q]), hn::Store(py[q], d, Y[q]);
-      for (std::size_t k = 0; k < hn::Lanes(d); ++k) {
-        U[0][k] = detail::rays::differenceOfProducts(X[2][k], Y[1][k], Y[2][k], X[1][k]);
-        U[1][k] = detail::rays::differenceOfProducts(X[0][k], Y[2][k], Y[0][k], X[2][k]);
-        U[2][k] = detail::rays::differenceOfProducts(X[1][k], Y[0][k], Y[1][k], X[0][k]);
-      }
-      u = hn::Load(d, U[0]), w1 = hn::Load(d, U[1]), w2 = hn::Load(d, U[2]);
-    }
-    const auto anyNegative = hn::Or(hn::Lt(u, zero), hn::Or(hn::Lt(w1, zero), hn::Lt(w2, zero)));
-    const auto anyPositive = hn::Or(hn::Gt(u, zero), hn::Or(hn::Gt(w1, zero), hn::Gt(w2, zero)));
-    const auto det = hn::Add(hn::Add(u, w1), w2);
-    const auto scaled =
-        hn::Add(hn::Add(hn::Mul(u, hn::Mul(sz, pz[0])), hn::Mul(w1, hn::Mul(sz, pz[1]))),
-                hn::Mul(w2, hn::Mul(sz, pz[2])));
-    const auto t = hn::Add(hn::Div(scaled, det), zero);  // -0 becomes +0
-    auto hit = hn::AndNot(hn::And(anyNegative, anyPositive), hn::Ne(det, zero));
-    hit = hn::And(hit, hn::And(hn::Ge(t, zero), hn::Le(t, hn::Set(d, r.tMax))));
+    hn::Vec<decltype(d)> t;
+    const auto hit = watertightHits(
+        d, r, r.tMax, [&](int q, int k) { return hn::Load(d, v.v[q][k] + i); }, t);
     closest.offer(d, i, hit, t);
   }
   return closest.result(d);

@@ -229,4 +229,28 @@ void sweepRects2d(const SortedRects2d& rects, std::vector<Pair>& out, Loop loop 
 // Every overlapping pair (i, j), i < j, of a rectangle stream, appended in ascending order.
 void bruteRects2d(const RectsView& v, std::vector<Pair>& out, Loop loop = Loop::kSimd);
 
+// ---- meshes: rays against a mesh's BVH (mesh_bvh.hpp, bvh_ray.cpp) ----------------------------
+}  // namespace simdphys::simd
+namespace simdphys {
+struct TriangleBlock;  // mesh_bvh.hpp: plain arrays, no Eigen
+}
+namespace simdphys::simd {
+// A mesh's tree: leaf reference first / 8 is the leaf's block of triangles.
+struct MeshView {
+  const BvhNode* nodes;
+  std::size_t nodeCount;
+  const TriangleBlock* blocks;
+};
+// Rays as SoA: origin, direction (non-zero), tMax (>= 0).
+struct RaysView {
+  const float* origin[3];
+  const float* direction[3];
+  const float* tMax;
+  std::size_t count;
+};
+// Per ray, the closest hit under mesh_bvh.hpp's rule (id kNoHit and t = inf for a miss), or
+// whether any triangle is hit (1 / 0): bit for bit what the reference traversal answers.
+void meshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t);
+void meshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit);
+
 }  // namespace simdphys::simd

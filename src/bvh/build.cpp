@@ -7,7 +7,21 @@
 #include "simdphys/bvh.hpp"
 
 namespace simdphys {
+
+// A primitive as the builder moves it: its box and id in 32 bytes, partitioned in place, so
+// every pass over a range reads memory in order (Embree's PrimRef).
+struct detail::BvhPrimRef {
+  std::array<float, 3> lo;
+  std::uint32_t id;
+  std::array<float, 3> hi;
+  float pad;
+  // Twice the centre: only the ordering matters, and halving would round.
+  float centroid(int a) const { return lo[a] + hi[a]; }
+};
+
 namespace {
+using PrimRef = detail::BvhPrimRef;
+static_assert(sizeof(PrimRef) == 32);
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr int kBins = 16;
@@ -33,18 +47,6 @@ struct Bounds {
   }
 };
 
-// A primitive as the builder moves it: its box and id in 32 bytes, partitioned in place, so
-// every pass over a range reads memory in order (Embree's PrimRef).
-struct PrimRef {
-  std::array<float, 3> lo;
-  std::uint32_t id;
-  std::array<float, 3> hi;
-  float pad;
-  // Twice the centre: only the ordering matters, and halving would round.
-  float centroid(int a) const { return lo[a] + hi[a]; }
-};
-static_assert(sizeof(PrimRef) == 32);
-
 struct Range {
   std::uint32_t begin, end;
   Bounds box;   // of the primitives
@@ -55,10 +57,14 @@ struct Range {
 
 class Builder {
  public:
-  Builder(const BoxStream& b, std::vector<BvhNode>& nodes) : nodes_(nodes), prims_(b.size()) {
-    for (std::uint32_t i = 0; i < prims_.size(); ++i)
-      prims_[i] = {
-          {b.minX()[i], b.minY()[i], b.minZ()[i]}, i, {b.maxX()[i], b.maxY()[i], b.maxZ()[i]}, 0};
+  Builder(std::vector<PrimRef> prims, const BvhBuildOptions& options, std::vector<BvhNode>& nodes)
+      : nodes_(nodes), prims_(std::move(prims)), options_(options) {}
+
+  // The primitive ids in leaf order (leaves reference ranges of it).
+  std::vector<std::uint32_t> order() const {
+    std::vector<std::uint32_t> ids(prims_.size());
+    for (std::size_t i = 0; i < prims_.size(); ++i) ids[i] = prims_[i].id;
+    return ids;
   }
 
   int build() {
@@ -88,15 +94,30 @@ class Builder {
     const std::uint32_t index = std::uint32_t(out.size());
     out.emplace_back();
     std::array<Range, BvhNode::kWidth> kids;
+    // Whether a child fitting a leaf has been judged not worth splitting.
+    std::array<bool, BvhNode::kWidth> settled{};
     int used = 1;
     kids[0] = range;
     while (used < BvhNode::kWidth) {
+      // Children too large for a leaf are split first, largest surface first; then, while slots
+      // remain, the largest child that a leaf could hold is split if the SAH says its two halves
+      // cost less to test than it does (a split inside a node adds no node to visit).
       int best = -1;
-      for (int k = 0; k < used; ++k)
-        if (kids[k].count() > 1 && (best < 0 || kids[k].box.halfArea() > kids[best].box.halfArea()))
-          best = k;
+      bool mustSplit = false;
+      for (int k = 0; k < used; ++k) {
+        const bool must = kids[k].count() > options_.maxLeafSize;
+        const bool may = kids[k].count() > 1 && !settled[k];
+        if (!must && !may) continue;
+        if (best < 0 || must > mustSplit ||
+            (must == mustSplit && kids[k].box.halfArea() > kids[best].box.halfArea()))
+          best = k, mustSplit = must;
+      }
       if (best < 0) break;
       auto [left, right] = split(kids[best]);
+      if (!mustSplit && leafCost(left) + leafCost(right) >= leafCost(kids[best])) {
+        settled[best] = true;
+        continue;
+      }
       kids[best] = left;
       kids[used++] = right;
     }
@@ -116,8 +137,12 @@ class Builder {
       node.maxX[k] = b.hi[0], node.maxY[k] = b.hi[1], node.maxZ[k] = b.hi[2];
       node.child[k] = BvhNode::kEmpty;
       if (k >= used) continue;
-      if (kids[k].count() == 1) {
-        node.child[k] = BvhNode::kLeaf | prims_[kids[k].begin].id;
+      if (kids[k].count() <= options_.maxLeafSize) {
+        // A box tree's one-primitive leaf names the primitive; others reference a range of the
+        // order, renumbered by Bvh::build once the leaves are aligned.
+        const std::uint32_t first =
+            options_.maxLeafSize == 1 ? prims_[kids[k].begin].id : kids[k].begin;
+        node.child[k] = BvhNode::kLeaf | (kids[k].count() - 1) << BvhNode::kCountShift | first;
         continue;
       }
       node.child[k] = std::uint32_t(out.size());
@@ -141,6 +166,13 @@ class Builder {
         if (c != BvhNode::kEmpty && !BvhNode::isLeaf(c)) c += offset;
       out.push_back(node);
     }
+  }
+
+  // The SAH cost of testing a range as one leaf: its surface times the blocks of leafAlign
+  // primitives it takes.
+  float leafCost(const Range& r) const {
+    const std::uint32_t blocks = (r.count() + options_.leafAlign - 1) / options_.leafAlign;
+    return r.box.halfArea() * float(blocks);
   }
 
   std::pair<Range, Range> split(const Range& r) {
@@ -237,52 +269,156 @@ class Builder {
 
   std::vector<BvhNode>& nodes_;
   std::vector<PrimRef> prims_;
+  BvhBuildOptions options_;
 };
+
+// What validate() accepts, without building its message for each of a million boxes.
+bool wellFormed(const Aabb& b) {
+  return b.min.allFinite() && b.max.allFinite() && (b.min.array() <= b.max.array()).all();
+}
+
+// Moves every multi-primitive leaf to a position that is a multiple of `align` in a new order, in
+// node order (so leaves a traversal meets together lie together), padding the rest of its last
+// block with its first primitive.
+std::vector<std::uint32_t> alignLeaves(std::vector<BvhNode>& nodes,
+                                       const std::vector<std::uint32_t>& order,
+                                       std::uint32_t align) {
+  std::vector<std::uint32_t> aligned;
+  aligned.reserve(order.size() + order.size() / 2);
+  for (BvhNode& node : nodes)
+    for (std::uint32_t& c : node.child) {
+      if (c == BvhNode::kEmpty || !BvhNode::isLeaf(c)) continue;
+      const std::uint32_t first = BvhNode::leafFirst(c), count = BvhNode::leafCount(c);
+      const std::uint32_t at = std::uint32_t(aligned.size());
+      aligned.insert(aligned.end(), order.begin() + first, order.begin() + first + count);
+      aligned.resize((aligned.size() + align - 1) / align * align, order[first]);
+      c = (c & ~BvhNode::kFirstMask) | at;
+    }
+  return aligned;
+}
 
 }  // namespace
 
 void Bvh::build(const BoxStream& boxes) {
-  if (boxes.size() > kMaxPrimitives)
-    throw Error("Bvh::build: " + std::to_string(boxes.size()) + " boxes, more than the " +
+  std::vector<PrimRef> prims(boxes.size());
+  for (std::uint32_t i = 0; i < prims.size(); ++i)
+    prims[i] = {{boxes.minX()[i], boxes.minY()[i], boxes.minZ()[i]},
+                i,
+                {boxes.maxX()[i], boxes.maxY()[i], boxes.maxZ()[i]},
+                0};
+  buildFrom(std::move(prims), BvhBuildOptions{}, "Bvh::build");
+}
+
+void Bvh::build(std::span<const Aabb> bounds, const BvhBuildOptions& options) {
+  if (options.maxLeafSize < 1 || options.maxLeafSize > 16)
+    throw Error("Bvh::build: maxLeafSize " + std::to_string(options.maxLeafSize) +
+                " is outside [1, 16]");
+  if (options.leafAlign != 1 && options.leafAlign < options.maxLeafSize)
+    throw Error("Bvh::build: leafAlign " + std::to_string(options.leafAlign) +
+                " is neither 1 nor at least maxLeafSize");
+  if (bounds.size() > kMaxPrimitives)  // checked before the loop below narrows the index
+    throw Error("Bvh::build: " + std::to_string(bounds.size()) + " primitives, more than the " +
                 std::to_string(kMaxPrimitives) + " a tree can index");
+  std::vector<PrimRef> prims(bounds.size());
+  for (std::uint32_t i = 0; i < prims.size(); ++i) {
+    const Aabb& b = bounds[i];
+    if (!wellFormed(b)) validate(b, "Bvh::build: bounds " + std::to_string(i));
+    prims[i] = {{b.min.x(), b.min.y(), b.min.z()}, i, {b.max.x(), b.max.y(), b.max.z()}, 0};
+  }
+  buildFrom(std::move(prims), options, "Bvh::build");
+}
+
+void Bvh::buildFrom(std::vector<PrimRef> prims, const BvhBuildOptions& options, const char* where) {
+  if (prims.size() > kMaxPrimitives)
+    throw Error(std::string(where) + ": " + std::to_string(prims.size()) +
+                " primitives, more than the " + std::to_string(kMaxPrimitives) +
+                " a tree can index");
   nodes_.clear();
-  primitives_ = boxes.size();
+  order_.clear();
+  options_ = options;
+  primitives_ = prims.size();
   depth_ = 0;
   if (primitives_ == 0) return;
-  nodes_.reserve(primitives_ / 3 + 1);  // a full tree has about n/7 nodes; SAH leaves slack
-  depth_ = Builder(boxes, nodes_).build();
+  nodes_.reserve(primitives_ / (3 * options.maxLeafSize) + 1);  // ~n/7 nodes per leaf size
+  Builder builder(std::move(prims), options, nodes_);
+  depth_ = builder.build();
   // The median fallback below kMaxSahDepth splits bounds the depth; this guards that reasoning.
   if (depth_ > BvhNode::kMaxDepth)
-    throw Error("Bvh::build: depth " + std::to_string(depth_) + " exceeds the traversal stack");
+    throw Error(std::string(where) + ": depth " + std::to_string(depth_) +
+                " exceeds the traversal stack");
+  if (options.maxLeafSize > 1) order_ = alignLeaves(nodes_, builder.order(), options.leafAlign);
+  if (order_.size() > kMaxPrimitives)
+    throw Error(std::string(where) + ": the aligned leaves need " + std::to_string(order_.size()) +
+                " slots, more than the " + std::to_string(kMaxPrimitives) + " a tree can index");
 }
+
+namespace {
+// One backward pass: children always follow their parent in the array, so every child is seen
+// before its parent. `leafBox(reference, k)` returns a leaf slot's bounds.
+template <class LeafBox>
+void refitNodes(std::vector<BvhNode>& nodes, LeafBox leafBox) {
+  for (std::size_t n = nodes.size(); n-- > 0;) {
+    BvhNode& node = nodes[n];
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      std::uint32_t c = node.child[k];
+      if (c == BvhNode::kEmpty) continue;
+      Bounds b;
+      if (BvhNode::isLeaf(c)) {
+        b = leafBox(c);
+      } else {
+        const BvhNode& sub = nodes[c];
+        b.lo = {*std::min_element(sub.minX, sub.minX + BvhNode::kWidth),
+                *std::min_element(sub.minY, sub.minY + BvhNode::kWidth),
+                *std::min_element(sub.minZ, sub.minZ + BvhNode::kWidth)};
+        b.hi = {*std::max_element(sub.maxX, sub.maxX + BvhNode::kWidth),
+                *std::max_element(sub.maxY, sub.maxY + BvhNode::kWidth),
+                *std::max_element(sub.maxZ, sub.maxZ + BvhNode::kWidth)};
+      }
+      node.minX[k] = b.lo[0], node.minY[k] = b.lo[1], node.minZ[k] = b.lo[2];
+      node.maxX[k] = b.hi[0], node.maxY[k] = b.hi[1], node.maxZ[k] = b.hi[2];
+    }
+  }
+}
+}  // namespace
 
 void Bvh::refit(const BoxStream& boxes) {
   if (boxes.size() != primitives_)
     throw Error("Bvh::refit: the stream has " + std::to_string(boxes.size()) +
                 " boxes, the tree was built on " + std::to_string(primitives_));
-  // Children always follow their parent in the array, so one backward pass sees every child
-  // before its parent.
-  for (std::size_t n = nodes_.size(); n-- > 0;) {
-    BvhNode& node = nodes_[n];
-    for (int k = 0; k < BvhNode::kWidth; ++k) {
-      std::uint32_t c = node.child[k];
-      if (c == BvhNode::kEmpty) continue;
-      if (BvhNode::isLeaf(c)) {
-        std::uint32_t id = BvhNode::leafFirst(c);
-        node.minX[k] = boxes.minX()[id], node.minY[k] = boxes.minY()[id];
-        node.minZ[k] = boxes.minZ()[id], node.maxX[k] = boxes.maxX()[id];
-        node.maxY[k] = boxes.maxY()[id], node.maxZ[k] = boxes.maxZ()[id];
-        continue;
-      }
-      const BvhNode& sub = nodes_[c];
-      node.minX[k] = *std::min_element(sub.minX, sub.minX + BvhNode::kWidth);
-      node.minY[k] = *std::min_element(sub.minY, sub.minY + BvhNode::kWidth);
-      node.minZ[k] = *std::min_element(sub.minZ, sub.minZ + BvhNode::kWidth);
-      node.maxX[k] = *std::max_element(sub.maxX, sub.maxX + BvhNode::kWidth);
-      node.maxY[k] = *std::max_element(sub.maxY, sub.maxY + BvhNode::kWidth);
-      node.maxZ[k] = *std::max_element(sub.maxZ, sub.maxZ + BvhNode::kWidth);
+  requireBoxTree("Bvh::refit(BoxStream)");
+  refitNodes(nodes_, [&](std::uint32_t c) {
+    const std::uint32_t id = BvhNode::leafFirst(c);
+    Bounds b;
+    b.lo = {boxes.minX()[id], boxes.minY()[id], boxes.minZ()[id]};
+    b.hi = {boxes.maxX()[id], boxes.maxY()[id], boxes.maxZ()[id]};
+    return b;
+  });
+}
+
+void Bvh::refit(std::span<const Aabb> bounds) {
+  if (bounds.size() != primitives_)
+    throw Error("Bvh::refit: " + std::to_string(bounds.size()) + " bounds, the tree was built on " +
+                std::to_string(primitives_));
+  for (std::size_t i = 0; i < bounds.size(); ++i)
+    if (!wellFormed(bounds[i])) validate(bounds[i], "Bvh::refit: bounds " + std::to_string(i));
+  const bool direct = options_.maxLeafSize == 1;
+  refitNodes(nodes_, [&](std::uint32_t c) {
+    const std::uint32_t first = BvhNode::leafFirst(c);
+    Bounds b;
+    for (std::uint32_t i = 0; i < BvhNode::leafCount(c); ++i) {
+      const Aabb& p = bounds[direct ? first : order_[first + i]];
+      b.grow(std::array<float, 3>{p.min.x(), p.min.y(), p.min.z()});
+      b.grow(std::array<float, 3>{p.max.x(), p.max.y(), p.max.z()});
     }
-  }
+    return b;
+  });
+}
+
+void Bvh::requireBoxTree(const char* where) const {
+  if (options_.maxLeafSize != 1)
+    throw Error(std::string(where) +
+                ": the tree has leaves of several primitives (a mesh's); query it through its "
+                "owner");
 }
 
 }  // namespace simdphys

@@ -26,6 +26,7 @@ auto overlapExpander(const Aabb& q, Visit visit) {
 
 void Bvh::query(const Aabb& q, std::vector<std::uint32_t>& out) const {
   validate(q, "Bvh::query");
+  requireBoxTree("Bvh::query");
   if (!referencePathActive()) return simd::bvhQuery(nodes_.data(), nodes_.size(), box(q), out);
   reference::traverseBvh(
       nodes_.data(), nodes_.size(),
@@ -33,6 +34,7 @@ void Bvh::query(const Aabb& q, std::vector<std::uint32_t>& out) const {
 }
 
 std::uint64_t Bvh::countOverlaps(std::span<const Aabb> queries) const {
+  requireBoxTree("Bvh::countOverlaps");
   for (std::size_t i = 0; i < queries.size(); ++i)
     validate(queries[i], "Bvh::countOverlaps: query " + std::to_string(i));
   if (!referencePathActive()) {

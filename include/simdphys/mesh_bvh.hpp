@@ -1,0 +1,107 @@
+// A triangle mesh's BVH and its queries: closest-hit and any-hit rays (one, or a stream of them),
+// linecasts and linetests, and overlap with spheres, boxes and triangles.
+//
+// The tree is the library's one Bvh, built over the triangles' bounds with leaves of up to
+// 8 triangles. The triangles are copied into leaf order as blocks of 8 (Embree's Triangle8): the
+// 9 vertex coordinates as rows of 8 floats and the 8 triangle ids, so one SIMD watertight test
+// (Woop, Benthin, Wald 2013; raycast.hpp) covers a leaf. A leaf's block is its first / 8; lanes
+// past its count repeat its first triangle, which changes no answer.
+//
+// Closest hit: the smallest t in [0, tMax], and where several triangles are hit within 1e-6
+// relative of it (t <= tMin * (1 + 1e-6)), the one with the smallest id wins (workload W2's rule),
+// its own t reported. Every path (reference and SIMD) computes every triangle's t bit for bit as
+// raycast.hpp's intersectTriangle does, so the answers are the same on every path and equal to
+// brute force over the triangles with the same rule.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "simdphys/bvh.hpp"
+#include "simdphys/geometry3d/streams.hpp"
+#include "simdphys/mesh.hpp"
+
+namespace simdphys {
+
+struct alignas(64) TriangleBlock {
+  static constexpr int kWidth = 8;
+  float v[3][3][kWidth];  // v[vertex a, b, c][coordinate x, y, z][lane]
+  std::uint32_t id[kWidth];
+};
+
+inline constexpr std::uint32_t kNoHit = ~0u;
+// Relative window within which two hits tie (W2): t <= tMin * kTieWindow.
+inline constexpr float kTieWindow = 1.0f + 1e-6f;
+
+struct MeshHit {
+  std::uint32_t id = kNoHit;  // the triangle's index in the mesh, kNoHit for a miss
+  float t = std::numeric_limits<float>::infinity();
+  bool hit() const { return id != kNoHit; }
+};
+
+// Rays as SoA: origin, direction (any non-zero length; t is in units of it) and tMax (>= 0).
+// Padding rays have tMax = -inf and hit nothing.
+class RayStream : public StreamSet<7> {
+ public:
+  RayStream() : StreamSet({0, 0, 0, 0, 0, 1, -kPadInf}) {}
+  // Throws Error naming the element: a coordinate not finite, a zero direction, tMax < 0 or NaN.
+  void push(const Ray& ray, float tMax = std::numeric_limits<float>::infinity());
+  Ray operator[](std::size_t i) const;
+
+  const Stream<float>& origin(int k) const { return fields_[k]; }
+  const Stream<float>& direction(int k) const { return fields_[3 + k]; }
+  const Stream<float>& tMax() const { return fields_[6]; }
+};
+
+class MeshBvh {
+ public:
+  static constexpr std::uint32_t kLeafSize = TriangleBlock::kWidth;
+
+  MeshBvh() = default;
+  // Validates the mesh (Mesh::validate) and builds the tree. Keeps a copy of the mesh.
+  explicit MeshBvh(Mesh mesh);
+
+  // After the vertices moved (same triangles): new bounds up the tree and new blocks. The tree's
+  // shape stays, so it answers exactly like a rebuild, only slower as the motion grows.
+  void refit(std::span<const Vec3f> vertices);
+
+  // Closest hit with t in [0, tMax] (the rule above), or a miss.
+  MeshHit raycast(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
+  // Whether any triangle is hit with t in [0, tMax]; stops at the first found.
+  bool occluded(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
+  // For every ray of the stream, its closest hit (out.size() == rays.size()).
+  void raycast(const RayStream& rays, std::span<MeshHit> out) const;
+  // For every ray, whether it hits anything (1) or not (0).
+  void occluded(const RayStream& rays, std::span<std::uint8_t> out) const;
+
+  // The closest hit along the segment, t the distance from its start (raycast.hpp's linecast),
+  // and whether the closed segment meets any triangle (linetest).
+  MeshHit linecast(const Segment& segment) const;
+  bool linetest(const Segment& segment) const;
+
+  // Ids of the triangles the shape intersects (intersect.hpp's tests, closed), ascending.
+  std::vector<std::uint32_t> overlapping(const Sphere& sphere) const;
+  std::vector<std::uint32_t> overlapping(const Aabb& box) const;
+  std::vector<std::uint32_t> overlapping(const Obb& box) const;
+  std::vector<std::uint32_t> overlapping(const Triangle& triangle) const;
+
+  const Mesh& mesh() const { return mesh_; }
+  const Bvh& bvh() const { return bvh_; }
+  std::span<const TriangleBlock> blocks() const { return blocks_; }
+
+ private:
+  void fillBlocks();
+  template <class Shape>
+  std::vector<std::uint32_t> overlappingShape(const Shape& shape, const Aabb& bounds) const;
+
+  Mesh mesh_;
+  Bvh bvh_;
+  std::vector<TriangleBlock> blocks_;
+  float extent_ = 0;  // twice the largest |coordinate|: the overlap queries' tolerance scale
+};
+
+}  // namespace simdphys

@@ -1,0 +1,181 @@
+// Rays against a mesh's BVH, one ray at a time (for incoherent rays): the 8 children of a node
+// are slab-tested together, the ones hit visited nearest first; a leaf's 8 triangles are tested
+// together with the watertight test (watertight-inl.hpp), the same arithmetic as the scalar
+// intersectTriangle, so every path returns the reference's hits bit for bit.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "simd/bvh_ray.cpp"
+#include <hwy/cache_control.h>
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+
+#include "simd/kernels.hpp"
+#include "simdphys/bvh.hpp"
+#include "simdphys/mesh_bvh.hpp"
+#include "src/bvh/mesh_ray.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace simdphys::simd {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+#include "simd/compress-inl.hpp"
+#include "simd/watertight-inl.hpp"
+#include "src/bvh/ray_traverse-inl.hpp"
+
+// A node's rows as offsets in floats from its start (BvhNode: minX minY minZ maxX maxY maxZ).
+constexpr int kRow = BvhNode::kWidth;
+
+template <class Sink>
+class RayCore {
+  using D = hn::CappedTag<float, BvhNode::kWidth>;
+
+ public:
+  RayCore(const MeshView& mesh, const detail::TraversalRay& ray, Sink& sink)
+      : mesh_(mesh), ray_(ray), sink_(sink) {
+    for (int a = 0; a < 3; ++a) {
+      near_[a] = (ray.negative[a] ? 3 + a : a) * kRow;
+      far_[a] = (ray.negative[a] ? a : 3 + a) * kRow;
+    }
+  }
+
+  float bound() const { return sink_.bound(); }
+
+  int expand(const BvhNode& n, float bound, std::uint32_t* refs, float* dists) const {
+    const D d;
+    const hn::RebindToUnsigned<D> du;
+    const float* rows = n.minX;
+    int count = 0;
+    for (std::size_t h = 0; h < BvhNode::kWidth; h += hn::Lanes(d)) {
+      auto enter = hn::Zero(d);
+      auto exit = hn::Set(d, bound);
+      for (int a = 0; a < 3; ++a) {
+        const auto o = hn::Set(d, ray_.origin[a]), inv = hn::Set(d, ray_.inverse[a]);
+        const auto tNear = hn::Mul(hn::Sub(hn::Load(d, rows + near_[a] + h), o), inv);
+        const auto tFar = hn::Mul(hn::Sub(hn::Load(d, rows + far_[a] + h), o), inv);
+        // Written as comparisons, not Min/Max: a NaN must leave the bound as it is.
+        enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
+        exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
+      }
+      enter = hn::Mul(enter, hn::Set(d, detail::kEnterScale));
+      const auto hit = hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale)));
+      if (hn::AllFalse(d, hit)) continue;
+      const auto child = hn::Load(du, n.child + h);
+      const int kept = int(compressStore32(du, child, hn::RebindMask(du, hit), refs + count));
+      compressStore32(d, enter, hit, dists + count);
+      // Large meshes miss the cache: fetch what will be visited while the rest is tested.
+      for (int k = count; k < count + kept; ++k) prefetch(refs[k]);
+      count += kept;
+    }
+    return count;
+  }
+
+  // Tests the leaf's block; true stops the traversal (the sink wants any hit and has one).
+  bool leaf(std::uint32_t ref) {
+    const D d;
+    const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
+    const std::size_t count = BvhNode::leafCount(ref);
+    for (std::size_t h = 0; h < count; h += hn::Lanes(d)) {
+      hn::Vec<D> t;
+      auto hit = watertightHits(
+          d, ray_.query, sink_.bound(),
+          [&](int q, int k) { return hn::Load(d, block.v[q][k] + h); }, t);
+      // Lanes past the count repeat the leaf's first triangle: not offered twice.
+      hit = hn::And(hit, hn::FirstN(d, count - h));
+      if (hn::AllFalse(d, hit)) continue;
+      if constexpr (Sink::kAnyHit) {
+        sink_.found = true;
+        return true;
+      } else {
+        alignas(64) float ts[hn::MaxLanes(D())];
+        hn::Store(t, d, ts);
+        std::uint8_t bits[8] = {};
+        hn::StoreMaskBits(d, hit, bits);
+        for (unsigned m = bits[0]; m != 0; m &= m - 1) {
+          const int k = __builtin_ctz(m);
+          sink_.offer(ts[k], block.id[h + k]);
+        }
+      }
+    }
+    return false;
+  }
+
+ private:
+  void prefetch(std::uint32_t ref) const {
+    const char* p;
+    std::size_t size;
+    if (BvhNode::isLeaf(ref)) {
+      p = reinterpret_cast<const char*>(mesh_.blocks +
+                                        BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
+      size = sizeof(TriangleBlock);
+    } else {
+      p = reinterpret_cast<const char*>(mesh_.nodes + ref);
+      size = sizeof(BvhNode);
+    }
+    for (std::size_t line = 0; line < size; line += 64) hwy::Prefetch(p + line);
+  }
+
+  const MeshView& mesh_;
+  const detail::TraversalRay& ray_;
+  Sink& sink_;
+  int near_[3], far_[3];
+};
+
+// The two sinks: the closest hit, and any hit (which stops at the first).
+struct Closest : ClosestHits {
+  using ClosestHits::ClosestHits;
+  static constexpr bool kAnyHit = false;
+};
+struct Any {
+  static constexpr bool kAnyHit = true;
+  float tMax;
+  bool found = false;
+  float bound() const { return tMax; }
+};
+
+detail::TraversalRay rayAt(const RaysView& r, std::size_t i) {
+  return detail::traversalRay(r.origin[0][i], r.origin[1][i], r.origin[2][i], r.direction[0][i],
+                              r.direction[1][i], r.direction[2][i], r.tMax[i]);
+}
+
+void MeshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
+  for (std::size_t i = 0; i < rays.count; ++i) {
+    const detail::TraversalRay ray = rayAt(rays, i);
+    Closest closest(ray.tMax);
+    RayCore<Closest> core(mesh, ray, closest);
+    traverseRay(mesh.nodes, mesh.nodeCount, core);
+    const MeshHit h = closest.result();
+    id[i] = h.id, t[i] = h.t;
+  }
+}
+
+void MeshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
+  for (std::size_t i = 0; i < rays.count; ++i) {
+    const detail::TraversalRay ray = rayAt(rays, i);
+    Any any{ray.tMax};
+    RayCore<Any> core(mesh, ray, any);
+    traverseRay(mesh.nodes, mesh.nodeCount, core);
+    hit[i] = any.found ? 1 : 0;
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace simdphys::simd
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace simdphys::simd {
+HWY_EXPORT(MeshClosestHits);
+HWY_EXPORT(MeshAnyHits);
+
+void meshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
+  HWY_DYNAMIC_DISPATCH(MeshClosestHits)(mesh, rays, id, t);
+}
+void meshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
+  HWY_DYNAMIC_DISPATCH(MeshAnyHits)(mesh, rays, hit);
+}
+}  // namespace simdphys::simd
+#endif

@@ -1,0 +1,50 @@
+// The watertight ray-triangle test (raycast.hpp's intersectTriangle) with one triangle per lane,
+// included inside each target's namespace (no include guard, by design). Used by the triangle
+// stream (batch3d.cpp) and the mesh BVH's leaves (bvh_ray.cpp), so both agree bit for bit with
+// the scalar test: vertices moved into the ray's sheared frame, edge functions u, v, w (with the
+// scalar's exact recomputation for lanes where one rounds to zero, which decides points exactly
+// on an edge), then t = (sum of weighted depths) / det. Needs <hwy/highway.h>, hn, kernels.hpp
+// and raycast.hpp (differenceOfProducts).
+
+// The lanes whose triangle the ray hits with t in [0, tMax]; their t in `t`. `vertex(q, k)`
+// loads coordinate k of vertex q (a, b, c) of the lanes' triangles.
+template <class D, class VertexRow>
+HWY_INLINE hn::Mask<D> watertightHits(D d, const WatertightQuery& r, float tMax, VertexRow vertex,
+                                      hn::Vec<D>& t) {
+  constexpr std::size_t kMaxLanes = hn::MaxLanes(D());
+  const float origin[3] = {r.ox, r.oy, r.oz};
+  const auto sx = hn::Set(d, r.sx), sy = hn::Set(d, r.sy), sz = hn::Set(d, r.sz);
+  const auto zero = hn::Zero(d);
+  // Per vertex: its coordinates relative to the origin, along kx, ky, kz.
+  auto relative = [&](int q, int k) { return hn::Sub(vertex(q, k), hn::Set(d, origin[k])); };
+  hn::Vec<D> px[3], py[3], pz[3];
+  for (int q = 0; q < 3; ++q) {
+    pz[q] = relative(q, r.kz);
+    px[q] = hn::Sub(relative(q, r.kx), hn::Mul(sx, pz[q]));
+    py[q] = hn::Sub(relative(q, r.ky), hn::Mul(sy, pz[q]));
+  }
+  auto edge = [](auto a, auto b, auto c, auto e) { return hn::Sub(hn::Mul(a, b), hn::Mul(c, e)); };
+  auto u = edge(px[2], py[1], py[2], px[1]);
+  auto w1 = edge(px[0], py[2], py[0], px[2]);  // the scalar's v
+  auto w2 = edge(px[1], py[0], py[1], px[0]);  // the scalar's w
+  const auto onEdge = hn::Or(hn::Eq(u, zero), hn::Or(hn::Eq(w1, zero), hn::Eq(w2, zero)));
+  if (HWY_UNLIKELY(!hn::AllFalse(d, onEdge))) {
+    alignas(64) float X[3][kMaxLanes], Y[3][kMaxLanes], U[3][kMaxLanes];
+    for (int q = 0; q < 3; ++q) hn::Store(px[q], d, X[q]), hn::Store(py[q], d, Y[q]);
+    for (std::size_t k = 0; k < hn::Lanes(d); ++k) {
+      U[0][k] = detail::rays::differenceOfProducts(X[2][k], Y[1][k], Y[2][k], X[1][k]);
+      U[1][k] = detail::rays::differenceOfProducts(X[0][k], Y[2][k], Y[0][k], X[2][k]);
+      U[2][k] = detail::rays::differenceOfProducts(X[1][k], Y[0][k], Y[1][k], X[0][k]);
+    }
+    u = hn::Load(d, U[0]), w1 = hn::Load(d, U[1]), w2 = hn::Load(d, U[2]);
+  }
+  const auto anyNegative = hn::Or(hn::Lt(u, zero), hn::Or(hn::Lt(w1, zero), hn::Lt(w2, zero)));
+  const auto anyPositive = hn::Or(hn::Gt(u, zero), hn::Or(hn::Gt(w1, zero), hn::Gt(w2, zero)));
+  const auto det = hn::Add(hn::Add(u, w1), w2);
+  const auto scaled =
+      hn::Add(hn::Add(hn::Mul(u, hn::Mul(sz, pz[0])), hn::Mul(w1, hn::Mul(sz, pz[1]))),
+              hn::Mul(w2, hn::Mul(sz, pz[2])));
+  t = hn::Add(hn::Div(scaled, det), zero);  // -0 becomes +0
+  const auto hit = hn::AndNot(hn::And(anyNegative, anyPositive), hn::Ne(det, zero));
+  return hn::And(hit, hn::And(hn::Ge(t, zero), hn::Le(t, hn::Set(d, tMax))));
+}

@@ -1,0 +1,368 @@
+// MeshBvh: the build into triangle blocks, refit, and the queries with their reference path.
+#include "simdphys/mesh_bvh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "simd/kernels.hpp"
+#include "simdphys/geometry3d/intersect.hpp"
+#include "simdphys/geometry3d/raycast.hpp"
+#include "src/bvh/mesh_ray.hpp"
+
+namespace simdphys {
+
+// ---- the reference path: the same traversal, a scalar core ----------------------------------
+namespace reference {
+#include "src/bvh/ray_traverse-inl.hpp"
+#include "src/bvh/traverse-inl.hpp"
+
+template <class Sink>
+class RayCore {
+ public:
+  RayCore(std::span<const TriangleBlock> blocks, const detail::TraversalRay& ray, Sink& sink)
+      : blocks_(blocks), ray_(ray), sink_(sink) {}
+
+  float bound() const { return sink_.bound(); }
+
+  // The SIMD kernel's slab test, slot by slot, with the same operations.
+  int expand(const BvhNode& n, float bound, std::uint32_t* refs, float* dists) const {
+    const float* lo[3] = {n.minX, n.minY, n.minZ};
+    const float* hi[3] = {n.maxX, n.maxY, n.maxZ};
+    int count = 0;
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      float enter = 0, exit = bound;
+      for (int a = 0; a < 3; ++a) {
+        const float nearFace = ray_.negative[a] ? hi[a][k] : lo[a][k];
+        const float farFace = ray_.negative[a] ? lo[a][k] : hi[a][k];
+        const float tNear = (nearFace - ray_.origin[a]) * ray_.inverse[a];
+        const float tFar = (farFace - ray_.origin[a]) * ray_.inverse[a];
+        if (tNear > enter) enter = tNear;
+        if (tFar < exit) exit = tFar;
+      }
+      enter *= detail::kEnterScale;
+      if (!(enter <= exit * detail::kExitScale)) continue;
+      refs[count] = n.child[k];
+      dists[count++] = enter;
+    }
+    return count;
+  }
+
+  bool leaf(std::uint32_t ref) {
+    const TriangleBlock& b = blocks_[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
+    for (std::uint32_t l = 0; l < BvhNode::leafCount(ref); ++l) {
+      const Triangle tri{{b.v[0][0][l], b.v[0][1][l], b.v[0][2][l]},
+                         {b.v[1][0][l], b.v[1][1][l], b.v[1][2][l]},
+                         {b.v[2][0][l], b.v[2][1][l], b.v[2][2][l]}};
+      const auto h = intersectTriangle(ray_.watertight, tri, sink_.bound());
+      if (!h) continue;
+      if constexpr (Sink::kAnyHit) {
+        sink_.found = true;
+        return true;
+      } else {
+        sink_.offer(h->t, b.id[l]);
+      }
+    }
+    return false;
+  }
+
+ private:
+  std::span<const TriangleBlock> blocks_;
+  const detail::TraversalRay& ray_;
+  Sink& sink_;
+};
+
+struct Closest : ClosestHits {
+  using ClosestHits::ClosestHits;
+  static constexpr bool kAnyHit = false;
+};
+struct Any {
+  static constexpr bool kAnyHit = true;
+  float tMax;
+  bool found = false;
+  float bound() const { return tMax; }
+};
+
+MeshHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
+                   const detail::TraversalRay& ray) {
+  Closest closest(ray.tMax);
+  RayCore<Closest> core(blocks, ray, closest);
+  traverseRay(bvh.nodes().data(), bvh.nodes().size(), core);
+  return closest.result();
+}
+
+bool anyHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
+            const detail::TraversalRay& ray) {
+  Any any{ray.tMax};
+  RayCore<Any> core(blocks, ray, any);
+  traverseRay(bvh.nodes().data(), bvh.nodes().size(), core);
+  return any.found;
+}
+
+// The leaves whose slot box overlaps `q` (closed): visit(first, count) for each.
+template <class Visit>
+void overlappingLeaves(const Bvh& bvh, const Aabb& q, Visit visit) {
+  traverseBvh(bvh.nodes().data(), bvh.nodes().size(),
+              [&](const BvhNode& n, std::uint32_t* stack, int top) {
+                for (int k = 0; k < BvhNode::kWidth; ++k) {
+                  const bool hit = n.minX[k] <= q.max.x() && q.min.x() <= n.maxX[k] &&
+                                   n.minY[k] <= q.max.y() && q.min.y() <= n.maxY[k] &&
+                                   n.minZ[k] <= q.max.z() && q.min.z() <= n.maxZ[k];
+                  if (!hit) continue;
+                  const std::uint32_t c = n.child[k];
+                  if (BvhNode::isLeaf(c))
+                    visit(BvhNode::leafFirst(c), BvhNode::leafCount(c));
+                  else
+                    stack[top++] = c;
+                }
+                return top;
+              });
+}
+}  // namespace reference
+
+// ---- rays ------------------------------------------------------------------------------------
+
+namespace {
+std::string at(std::string_view where, std::size_t i) {
+  return std::string(where) + ": element " + std::to_string(i);
+}
+
+void validateRay(const Ray& ray, float tMax, const std::string& where) {
+  detail::requireFiniteField(ray.origin, where, "origin");
+  detail::requireFiniteField(ray.direction, where, "direction");
+  if ((ray.direction.array() == 0).all()) throw Error(where + ": the direction is zero");
+  if (!(tMax >= 0)) throw Error(where + ": tMax " + std::to_string(tMax) + " is negative or NaN");
+}
+
+simd::MeshView meshView(const Bvh& bvh, std::span<const TriangleBlock> blocks) {
+  return {bvh.nodes().data(), bvh.nodes().size(), blocks.data()};
+}
+
+// Rays in chunks: each a kernel call of its own, chunks spread over the threads (each ray is
+// independent, so the answers do not depend on the thread count).
+constexpr std::size_t kChunk = 256;
+simd::RaysView chunk(const RayStream& rays, std::size_t begin) {
+  simd::RaysView v{};
+  for (int k = 0; k < 3; ++k)
+    v.origin[k] = rays.origin(k).data() + begin, v.direction[k] = rays.direction(k).data() + begin;
+  v.tMax = rays.tMax().data() + begin;
+  v.count = std::min(kChunk, rays.size() - begin);
+  return v;
+}
+
+detail::TraversalRay traversal(const Ray& r, float tMax) {
+  return detail::traversalRay(r.origin.x(), r.origin.y(), r.origin.z(), r.direction.x(),
+                              r.direction.y(), r.direction.z(), tMax);
+}
+}  // namespace
+
+void RayStream::push(const Ray& ray, float tMax) {
+  validateRay(ray, tMax, at("RayStream::push", size()));
+  append({ray.origin.x(), ray.origin.y(), ray.origin.z(), ray.direction.x(), ray.direction.y(),
+          ray.direction.z(), tMax});
+}
+
+Ray RayStream::operator[](std::size_t i) const {
+  return {{value(0, i), value(1, i), value(2, i)}, {value(3, i), value(4, i), value(5, i)}};
+}
+
+MeshHit MeshBvh::raycast(const Ray& ray, float tMax) const {
+  validateRay(ray, tMax, "MeshBvh::raycast");
+  if (referencePathActive()) return reference::closestHit(bvh_, blocks_, traversal(ray, tMax));
+  const float o[3] = {ray.origin.x(), ray.origin.y(), ray.origin.z()};
+  const float d[3] = {ray.direction.x(), ray.direction.y(), ray.direction.z()};
+  const simd::RaysView v{{o, o + 1, o + 2}, {d, d + 1, d + 2}, &tMax, 1};
+  MeshHit h;
+  simd::meshClosestHits(meshView(bvh_, blocks_), v, &h.id, &h.t);
+  return h;
+}
+
+bool MeshBvh::occluded(const Ray& ray, float tMax) const {
+  validateRay(ray, tMax, "MeshBvh::occluded");
+  if (referencePathActive()) return reference::anyHit(bvh_, blocks_, traversal(ray, tMax));
+  const float o[3] = {ray.origin.x(), ray.origin.y(), ray.origin.z()};
+  const float d[3] = {ray.direction.x(), ray.direction.y(), ray.direction.z()};
+  const simd::RaysView v{{o, o + 1, o + 2}, {d, d + 1, d + 2}, &tMax, 1};
+  std::uint8_t hit = 0;
+  simd::meshAnyHits(meshView(bvh_, blocks_), v, &hit);
+  return hit != 0;
+}
+
+void MeshBvh::raycast(const RayStream& rays, std::span<MeshHit> out) const {
+  if (out.size() != rays.size())
+    throw Error("MeshBvh::raycast: " + std::to_string(out.size()) + " hits for " +
+                std::to_string(rays.size()) + " rays");
+  const bool ref = referencePathActive();
+  const std::int64_t chunks = std::int64_t((rays.size() + kChunk - 1) / kChunk);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t c = 0; c < chunks; ++c) {
+    const std::size_t begin = std::size_t(c) * kChunk;
+    const simd::RaysView v = chunk(rays, begin);
+    if (ref) {
+      for (std::size_t i = 0; i < v.count; ++i)
+        out[begin + i] = reference::closestHit(
+            bvh_, blocks_,
+            detail::traversalRay(v.origin[0][i], v.origin[1][i], v.origin[2][i], v.direction[0][i],
+                                 v.direction[1][i], v.direction[2][i], v.tMax[i]));
+      continue;
+    }
+    std::uint32_t id[kChunk];
+    float t[kChunk];
+    simd::meshClosestHits(meshView(bvh_, blocks_), v, id, t);
+    for (std::size_t i = 0; i < v.count; ++i) out[begin + i] = {id[i], t[i]};
+  }
+}
+
+void MeshBvh::occluded(const RayStream& rays, std::span<std::uint8_t> out) const {
+  if (out.size() != rays.size())
+    throw Error("MeshBvh::occluded: " + std::to_string(out.size()) + " results for " +
+                std::to_string(rays.size()) + " rays");
+  const bool ref = referencePathActive();
+  const std::int64_t chunks = std::int64_t((rays.size() + kChunk - 1) / kChunk);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t c = 0; c < chunks; ++c) {
+    const std::size_t begin = std::size_t(c) * kChunk;
+    const simd::RaysView v = chunk(rays, begin);
+    if (!ref) {
+      simd::meshAnyHits(meshView(bvh_, blocks_), v, out.data() + begin);
+      continue;
+    }
+    for (std::size_t i = 0; i < v.count; ++i)
+      out[begin + i] = reference::anyHit(
+          bvh_, blocks_,
+          detail::traversalRay(v.origin[0][i], v.origin[1][i], v.origin[2][i], v.direction[0][i],
+                               v.direction[1][i], v.direction[2][i], v.tMax[i]));
+  }
+}
+
+// ---- segments --------------------------------------------------------------------------------
+
+// raycast.hpp's linecast: the ray from start along end - start (not normalised) up to t = 1, then
+// t turned into a distance. A point-like segment crosses nothing.
+MeshHit MeshBvh::linecast(const Segment& s) const {
+  validate(s, "MeshBvh::linecast");
+  if (detail::rays::isPointSegment(s)) return {};
+  MeshHit h = raycast(Ray{s.start, s.direction()}, 1.0f);
+  if (h.hit()) h.t *= s.length();
+  return h;
+}
+
+// A crossing, or a triangle the segment touches in its plane (raycast.hpp's linetest), among the
+// triangles whose bounds meet the segment's.
+bool MeshBvh::linetest(const Segment& s) const {
+  validate(s, "MeshBvh::linetest");
+  if (!detail::rays::isPointSegment(s) && occluded(Ray{s.start, s.direction()}, 1.0f)) return true;
+  const Aabb box{s.start.cwiseMin(s.end), s.start.cwiseMax(s.end)};
+  bool found = false;
+  reference::overlappingLeaves(bvh_, box, [&](std::uint32_t first, std::uint32_t count) {
+    for (std::uint32_t i = 0; i < count && !found; ++i)
+      found = simdphys::linetest(mesh_.triangle(bvh_.order()[first + i]), s);
+  });
+  return found;
+}
+
+// ---- overlap ---------------------------------------------------------------------------------
+
+namespace {
+Aabb boundsOf(const Sphere& s) {
+  return {s.center.array() - s.radius, s.center.array() + s.radius};
+}
+Aabb boundsOf(const Aabb& b) { return b; }
+Aabb boundsOf(const Obb& b) {
+  const Vec3f reach = b.axes.cwiseAbs() * b.halfExtents;
+  return {b.center - reach, b.center + reach};
+}
+Aabb boundsOf(const Triangle& t) {
+  return {t.a.cwiseMin(t.b).cwiseMin(t.c), t.a.cwiseMax(t.b).cwiseMax(t.c)};
+}
+}  // namespace
+
+// The tests of intersect.hpp accept shapes up to kGeometryTolerance * scale apart, scale bounded
+// by the shapes' sizes and their distance; the query's bounds are widened by several times that
+// for the largest scale in play (the query, the mesh's extent and its longest edge), so the tree
+// never culls a triangle the exact test would accept.
+template <class Shape>
+std::vector<std::uint32_t> MeshBvh::overlappingShape(const Shape& shape, const Aabb& bounds) const {
+  std::vector<std::uint32_t> ids;
+  if (mesh_.size() == 0) return ids;
+  const float scale = (bounds.max - bounds.min).maxCoeff() + bounds.min.cwiseAbs().maxCoeff() +
+                      bounds.max.cwiseAbs().maxCoeff() + extent_;
+  const float margin = 8 * kGeometryTolerance<float> * scale;
+  const Aabb wide{bounds.min.array() - margin, bounds.max.array() + margin};
+  reference::overlappingLeaves(bvh_, wide, [&](std::uint32_t first, std::uint32_t count) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const std::uint32_t id = bvh_.order()[first + i];
+      if (intersects(mesh_.triangle(id), shape)) ids.push_back(id);
+    }
+  });
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+std::vector<std::uint32_t> MeshBvh::overlapping(const Sphere& s) const {
+  validate(s, "MeshBvh::overlapping(Sphere)");
+  return overlappingShape(s, boundsOf(s));
+}
+std::vector<std::uint32_t> MeshBvh::overlapping(const Aabb& b) const {
+  validate(b, "MeshBvh::overlapping(Aabb)");
+  return overlappingShape(b, boundsOf(b));
+}
+std::vector<std::uint32_t> MeshBvh::overlapping(const Obb& b) const {
+  validate(b, "MeshBvh::overlapping(Obb)");
+  return overlappingShape(b, boundsOf(b));
+}
+std::vector<std::uint32_t> MeshBvh::overlapping(const Triangle& t) const {
+  validate(t, "MeshBvh::overlapping(Triangle)");
+  return overlappingShape(t, boundsOf(t));
+}
+
+// ---- build and refit -------------------------------------------------------------------------
+
+namespace {
+std::vector<Aabb> triangleBounds(const Mesh& m) {
+  std::vector<Aabb> b(m.size());
+  for (std::size_t i = 0; i < m.size(); ++i) b[i] = boundsOf(m.triangle(i));
+  return b;
+}
+
+float extentOf(const Mesh& m) {
+  float e = 0;
+  for (const Vec3f& v : m.vertices) e = std::max(e, v.cwiseAbs().maxCoeff());
+  return 2 * e;
+}
+}  // namespace
+
+MeshBvh::MeshBvh(Mesh mesh) : mesh_(std::move(mesh)) {
+  mesh_.validate("MeshBvh");
+  bvh_.build(triangleBounds(mesh_), {kLeafSize, kLeafSize});
+  extent_ = extentOf(mesh_);
+  fillBlocks();
+}
+
+void MeshBvh::refit(std::span<const Vec3f> vertices) {
+  if (vertices.size() != mesh_.vertices.size())
+    throw Error("MeshBvh::refit: " + std::to_string(vertices.size()) + " vertices, the mesh has " +
+                std::to_string(mesh_.vertices.size()));
+  Mesh moved{{vertices.begin(), vertices.end()}, mesh_.triangles};
+  moved.validate("MeshBvh::refit");  // before anything changes: a throw leaves the tree as it was
+  mesh_.vertices = std::move(moved.vertices);
+  bvh_.refit(triangleBounds(mesh_));
+  extent_ = extentOf(mesh_);
+  fillBlocks();
+}
+
+void MeshBvh::fillBlocks() {
+  const auto order = bvh_.order();
+  blocks_.resize(order.size() / TriangleBlock::kWidth);
+  for (std::size_t b = 0; b < blocks_.size(); ++b)
+    for (int l = 0; l < TriangleBlock::kWidth; ++l) {
+      const std::uint32_t id = order[b * TriangleBlock::kWidth + l];
+      const Triangle t = mesh_.triangle(id);
+      const Vec3f* v[3] = {&t.a, &t.b, &t.c};
+      for (int q = 0; q < 3; ++q)
+        for (int k = 0; k < 3; ++k) blocks_[b].v[q][k][l] = (*v[q])[k];
+      blocks_[b].id[l] = id;
+    }
+}
+
+}  // namespace simdphys
