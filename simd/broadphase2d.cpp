@@ -1,5 +1,6 @@
-// The 2D broadphase kernels: sweep and prune over rectangles sorted by minX (for rectangle i, the
-// candidates after it are tested a vector at a time until a whole vector starts past maxX[i]),
+// The 2D broadphase kernels: sweep and prune over one band's rectangles sorted by minX (for
+// rectangle i, the candidates after it are tested a vector at a time until a whole vector starts
+// past maxX[i]),
 // and the brute force over all pairs (for rectangle i, every rectangle after it, a vector at a
 // time). Each also as the plain loop left to the auto-vectoriser.
 #undef HWY_TARGET_INCLUDE
@@ -7,6 +8,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "simd/kernels.hpp"
@@ -42,8 +44,9 @@ void SweepRects2d(const SortedRects2d& c, std::vector<Pair>& out, Loop loop) {
       const auto hit = hn::And(inX, hn::And(hn::Le(hn::LoadU(d, c.minY + j), maxY),
                                             hn::Le(minY, hn::LoadU(d, c.maxY + j))));
       if (hn::AllFalse(d, hit)) continue;
-      forEachLane(d, hit,
-                  [&](std::size_t k) { out.push_back(orderedPair2d(c.id[i], c.id[j + k])); });
+      forEachLane(d, hit, [&](std::size_t k) {
+        if (bandOwnsPair(c, i, j + k)) out.push_back(orderedPair2d(c.id[i], c.id[j + k]));
+      });
     }
   }
 }

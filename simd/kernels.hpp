@@ -217,13 +217,17 @@ std::size_t pointInRects(const PointQuery2d& p, const RectsView& v, std::uint32_
 std::size_t pointInOrientedRects(const PointQuery2d& p, const OrientedRectsView& v,
                                  std::uint32_t* out, Loop loop = Loop::kSimd);
 
-// 2D broadphase. Rectangles sorted by minX, with their ids, followed by kStreamPad sentinel
-// entries (minX = +inf): the sweep appends, for each rectangle k in that order, the pairs with the
-// rectangles after it that overlap it (closed), as (smaller id, larger id).
+// 2D broadphase. One horizontal band's rectangles sorted by minX, each with its id and the first
+// band it covers (loBand), followed by kStreamPad sentinel entries (minX = +inf): the sweep
+// appends, for each rectangle k in that order, the pairs with the rectangles after it that overlap
+// it (closed) and belong to this band, as (smaller id, larger id). A pair belongs to the band
+// holding the low edge of the two rectangles' intersection, max(loBand), so it is reported once.
 struct SortedRects2d {
   const float *minX, *maxX, *minY, *maxY;
   const std::uint32_t* id;
+  const std::int32_t* loBand;
   std::size_t count;
+  std::int32_t band;
 };
 void sweepRects2d(const SortedRects2d& rects, std::vector<Pair>& out, Loop loop = Loop::kSimd);
 // Every overlapping pair (i, j), i < j, of a rectangle stream, appended in ascending order.

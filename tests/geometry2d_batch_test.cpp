@@ -415,6 +415,19 @@ std::vector<RectSet> rectSets() {
   RectStream mixed = randomRects(73, 1500, 50);
   for (int i = 0; i < 5; ++i) mixed.push({Vec2f::Constant(-60.0f + i), Vec2f::Constant(60.0f - i)});
   sets.push_back({"huge_among_small", std::move(mixed)});
+  // Everything on the line y = 0: no height to cut into bands.
+  RectStream flat;
+  for (int i = 0; i < 700; ++i)
+    flat.push({Vec2f(float(i % 50), 0), Vec2f(float(i % 50) + 1.5f, 0)});
+  sets.push_back({"flat", std::move(flat)});
+  // Many bands: a tall thin world, rectangles spanning from one band to several.
+  RectStream tall;
+  scenes::Random t(74);
+  for (int i = 0; i < 3000; ++i) {
+    const Vec2f c(t.uniform(-3, 3), t.uniform(-3000, 3000));
+    tall.push(Rect::fromCenter(c, Vec2f(t.uniform(0, 1), i % 50 == 0 ? 200.0f : t.uniform(0, 2))));
+  }
+  sets.push_back({"tall_many_bands", std::move(tall)});
   RectStream tiny;
   tiny.push({{0, 0}, {1, 1}});
   sets.push_back({"one", std::move(tiny)});
@@ -430,8 +443,8 @@ TEST_P(Broadphase2d, EveryMethodEqualsBruteForce) {
   std::vector<Pair> pairs;
   for (const RectSet& set : rectSets()) {
     const std::vector<Pair> want = bruteForcePairs(set.rects);
-    for (PairMethod2d method :
-         {PairMethod2d::kSweep, PairMethod2d::kBrute, PairMethod2d::kQuadtree}) {
+    for (PairMethod2d method : {PairMethod2d::kBandedSweep, PairMethod2d::kSweep,
+                                PairMethod2d::kBrute, PairMethod2d::kQuadtree}) {
       finder.find(set.rects, pairs, method);
       EXPECT_EQ(pairs, want) << set.name << ", method " << int(method);
     }
@@ -446,7 +459,8 @@ TEST_P(Broadphase2d, PlainLoopBaselinesEqualBruteForce) {
   std::vector<Pair> pairs;
   for (const RectSet& set : rectSets()) {
     const std::vector<Pair> want = bruteForcePairs(set.rects);
-    for (PairMethod2d method : {PairMethod2d::kSweep, PairMethod2d::kBrute}) {
+    for (PairMethod2d method :
+         {PairMethod2d::kBandedSweep, PairMethod2d::kSweep, PairMethod2d::kBrute}) {
       detail::findPairs2dAutovec(finder, set.rects, pairs, method);
       EXPECT_EQ(pairs, want) << set.name << ", method " << int(method);
     }

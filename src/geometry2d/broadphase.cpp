@@ -1,5 +1,5 @@
-// The 2D broadphase: sweep and prune, brute force and the quadtree behind one call, all returning
-// the pairs sorted.
+// The 2D broadphase: sweep and prune (in horizontal bands, or one), brute force and the quadtree
+// behind one call, all returning the pairs sorted.
 #include "simdphys/geometry2d/broadphase.hpp"
 
 #include <algorithm>
@@ -15,28 +15,90 @@ namespace reference {
 #include "sweep-inl.hpp"
 }  // namespace reference
 
+namespace {
+
+// Rectangles per band the banded sweep aims at, and the least band height in mean rectangle
+// heights: bands short enough that the candidates along x stay few (a single band's grow with the
+// square root of the count at constant density), tall enough that rectangles in two bands stay
+// rare. Chosen by measurement on W7 (docs/geometry2d.md).
+constexpr double kRectsPerBand = 256;
+constexpr double kMinBandInRects = 16;
+
+struct Bands {
+  int count = 1;
+  float origin = 0, scale = 0;
+  // Monotonic in y, so a rectangle's bands are those from band(minY) to band(maxY).
+  int band(float y) const { return std::clamp(int((y - origin) * scale), 0, count - 1); }
+};
+
+Bands chooseBands(const RectStream& r, bool banded) {
+  Bands b;
+  const std::size_t n = r.size();
+  if (!banded || n == 0) return b;
+  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  double height = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = std::min(lo, r.minY()[i]), hi = std::max(hi, r.maxY()[i]);
+    height += r.maxY()[i] - r.minY()[i];
+  }
+  const double extent = double(hi) - lo, meanHeight = height / double(n);
+  double count = double(n) / kRectsPerBand;
+  if (meanHeight > 0) count = std::min(count, extent / (kMinBandInRects * meanHeight));
+  b.count = int(std::clamp(count, 1.0, 65536.0));
+  b.origin = lo;
+  b.scale = hi > lo ? float(b.count / extent) : 0.0f;
+  return b;
+}
+
+}  // namespace
+
 struct PairFinder2d::Scratch {
   RadixSorter sorter;
+  // The bands one after the other, each sorted by minX and followed by kStreamPad sentinels that
+  // start past everything and overlap nothing.
   std::vector<float> minX, maxX, minY, maxY;
   std::vector<std::uint32_t> id;
-  std::vector<std::uint32_t> start;  // counting sort of pairs: the first slot of each `a`
+  std::vector<std::int32_t> loBand, hiBand, bandLo;
+  std::vector<std::uint32_t> begin, cursor;  // per band, into the arrays above
+  std::vector<std::uint32_t> start;          // counting sort of pairs: the first slot of each `a`
   std::vector<Pair> sorted;
 
-  // The rectangles sorted by minX (ties in index order) as the sweep reads them, followed by
-  // kStreamPad sentinels that start past everything and overlap nothing.
-  simd::SortedRects2d sortByMinX(const RectStream& r) {
-    const std::size_t n = r.size(), size = n + kStreamPad;
-    const float inf = std::numeric_limits<float>::infinity();
-    minX.assign(size, inf), minY.assign(size, inf);
-    maxX.assign(size, -inf), maxY.assign(size, -inf);
-    id.assign(size, 0);
-    const std::vector<std::uint32_t>& order = sorter.sort(r.minX().data(), n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::uint32_t i = order[k];
-      minX[k] = r.minX()[i], maxX[k] = r.maxX()[i], minY[k] = r.minY()[i], maxY[k] = r.maxY()[i];
-      id[k] = i;
+  // Sorts all rectangles by minX once (ties in index order), then deals them out to their bands in
+  // that order, so each band comes out sorted.
+  void fillBands(const RectStream& r, const Bands& b) {
+    const std::size_t n = r.size(), bands = std::size_t(b.count);
+    loBand.resize(n), hiBand.resize(n);
+    begin.assign(bands + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      loBand[i] = b.band(r.minY()[i]), hiBand[i] = b.band(r.maxY()[i]);
+      for (int k = loBand[i]; k <= hiBand[i]; ++k) ++begin[std::size_t(k) + 1];
     }
-    return {minX.data(), maxX.data(), minY.data(), maxY.data(), id.data(), n};
+    for (std::size_t k = 0; k < bands; ++k) begin[k + 1] += begin[k] + std::uint32_t(kStreamPad);
+    const float inf = std::numeric_limits<float>::infinity();
+    const std::size_t size = begin[bands];
+    minX.assign(size, inf), minY.assign(size, inf), maxX.assign(size, -inf),
+        maxY.assign(size, -inf);
+    id.assign(size, 0), bandLo.assign(size, 0);
+    cursor.assign(begin.begin(), begin.end() - 1);
+    const std::vector<std::uint32_t>& order = sorter.sort(r.minX().data(), n);
+    for (const std::uint32_t i : order)
+      for (int k = loBand[i]; k <= hiBand[i]; ++k) {
+        const std::uint32_t at = cursor[std::size_t(k)]++;
+        minX[at] = r.minX()[i], maxX[at] = r.maxX()[i], minY[at] = r.minY()[i];
+        maxY[at] = r.maxY()[i], id[at] = i, bandLo[at] = loBand[i];
+      }
+  }
+
+  simd::SortedRects2d band(std::size_t k) const {
+    const std::size_t first = begin[k], count = begin[k + 1] - first - kStreamPad;
+    return {minX.data() + first,
+            maxX.data() + first,
+            minY.data() + first,
+            maxY.data() + first,
+            id.data() + first,
+            bandLo.data() + first,
+            count,
+            std::int32_t(k)};
   }
 
   // Sorts pairs ascending: a counting sort on a (a < n), then each run of equal a, which holds the
@@ -57,9 +119,11 @@ struct PairFinder2d::Scratch {
   }
 
   template <class Sweep>
-  void sweep(const RectStream& r, std::vector<Pair>& pairs, Sweep sweepKernel) {
+  void sweep(const RectStream& r, std::vector<Pair>& pairs, bool banded, Sweep sweepKernel) {
     pairs.clear();
-    sweepKernel(sortByMinX(r), pairs);
+    const Bands b = chooseBands(r, banded);
+    fillBands(r, b);
+    for (std::size_t k = 0; k < std::size_t(b.count); ++k) sweepKernel(band(k), pairs);
     sortPairs(pairs, r.size());
   }
 };
@@ -103,11 +167,15 @@ void PairFinder2d::find(const RectStream& r, std::vector<Pair>& pairs, PairMetho
       if (referencePathActive()) return bruteReference(r, pairs);
       pairs.clear();
       return simd::bruteRects2d(view(r), pairs);
-    case PairMethod2d::kSweep:
-      if (referencePathActive()) return scratch_->sweep(r, pairs, reference::sweepRects2dScalar);
-      return scratch_->sweep(r, pairs, [](const simd::SortedRects2d& s, std::vector<Pair>& out) {
-        simd::sweepRects2d(s, out);
-      });
+    case PairMethod2d::kBandedSweep:
+    case PairMethod2d::kSweep: {
+      const bool banded = method == PairMethod2d::kBandedSweep;
+      if (referencePathActive())
+        return scratch_->sweep(r, pairs, banded, reference::sweepRects2dScalar);
+      return scratch_->sweep(
+          r, pairs, banded,
+          [](const simd::SortedRects2d& s, std::vector<Pair>& out) { simd::sweepRects2d(s, out); });
+    }
   }
   throw Error("PairFinder2d::find: unknown method " + std::to_string(int(method)));
 }
@@ -122,11 +190,12 @@ void detail::findPairs2dAutovec(PairFinder2d& finder, const RectStream& r, std::
     pairs.clear();
     return simd::bruteRects2d(view(r), pairs, simd::Loop::kAutovec);
   }
-  if (method != PairMethod2d::kSweep)
-    throw Error("findPairs2dAutovec: only the sweep and the brute force have a plain loop");
-  finder.scratch_->sweep(r, pairs, [](const simd::SortedRects2d& s, std::vector<Pair>& out) {
-    simd::sweepRects2d(s, out, simd::Loop::kAutovec);
-  });
+  if (method == PairMethod2d::kQuadtree)
+    throw Error("findPairs2dAutovec: the quadtree has no plain-loop form");
+  finder.scratch_->sweep(r, pairs, method == PairMethod2d::kBandedSweep,
+                         [](const simd::SortedRects2d& s, std::vector<Pair>& out) {
+                           simd::sweepRects2d(s, out, simd::Loop::kAutovec);
+                         });
 }
 
 }  // namespace simdphys

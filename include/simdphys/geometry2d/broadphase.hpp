@@ -12,9 +12,14 @@
 namespace simdphys {
 
 enum class PairMethod2d {
-  // Sort by minX, then for each rectangle test the ones starting before its maxX on y, a SIMD
-  // vector at a time. The default: the fastest measured from 1,000 rectangles up
+  // Sweep and prune along x inside horizontal bands of a few rectangle heights each: sorted by
+  // minX, each rectangle tests the ones starting before its maxX on y, a SIMD vector at a time. A
+  // pair in several bands is found in the one holding the low edge of its intersection, so once.
+  // The default: the fastest measured at every size from 1,000 rectangles up
   // (docs/geometry2d.md).
+  kBandedSweep,
+  // The same sweep in a single band: the textbook sweep and prune. Its candidates along x grow
+  // with the square root of the count at constant density.
   kSweep,
   // Every pair tested, a SIMD vector at a time: no sort, no structure.
   kBrute,
@@ -25,7 +30,7 @@ enum class PairMethod2d {
 
 class PairFinder2d;
 namespace detail {
-// Benchmark baseline: the sweep or brute force as plain loops left to the auto-vectoriser.
+// Benchmark baseline: the sweeps or the brute force as plain loops left to the auto-vectoriser.
 void findPairs2dAutovec(PairFinder2d&, const RectStream&, std::vector<Pair>&, PairMethod2d);
 }  // namespace detail
 
@@ -41,7 +46,7 @@ class PairFinder2d {
   PairFinder2d& operator=(PairFinder2d&&) noexcept;
 
   void find(const RectStream& rects, std::vector<Pair>& pairs,
-            PairMethod2d method = PairMethod2d::kSweep);
+            PairMethod2d method = PairMethod2d::kBandedSweep);
 
  private:
   friend void detail::findPairs2dAutovec(PairFinder2d&, const RectStream&, std::vector<Pair>&,
@@ -52,6 +57,6 @@ class PairFinder2d {
 
 // One-off form of PairFinder2d::find.
 void findPairs(const RectStream& rects, std::vector<Pair>& pairs,
-               PairMethod2d method = PairMethod2d::kSweep);
+               PairMethod2d method = PairMethod2d::kBandedSweep);
 
 }  // namespace simdphys
