@@ -29,7 +29,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 // A node's rows as offsets in floats from its start (BvhNode: minX minY minZ maxX maxY maxZ).
 constexpr int kRow = BvhNode::kWidth;
 
-template <class Sink>
+// kFinite: the ray's inverse direction is finite on every axis (the common case), so no slab
+// product is NaN and plain Min/Max bound the interval.
+template <class Sink, bool kFinite>
 class RayCore {
   using D = hn::CappedTag<float, BvhNode::kWidth>;
 
@@ -56,9 +58,13 @@ class RayCore {
         const auto o = hn::Set(d, ray_.origin[a]), inv = hn::Set(d, ray_.inverse[a]);
         const auto tNear = hn::Mul(hn::Sub(hn::Load(d, rows + near_[a] + h), o), inv);
         const auto tFar = hn::Mul(hn::Sub(hn::Load(d, rows + far_[a] + h), o), inv);
-        // Written as comparisons, not Min/Max: a NaN must leave the bound as it is.
-        enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
-        exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
+        if constexpr (kFinite) {
+          enter = hn::Max(tNear, enter);
+          exit = hn::Min(tFar, exit);
+        } else {  // comparisons: a NaN must leave the bound as it is
+          enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
+          exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
+        }
       }
       enter = hn::Mul(enter, hn::Set(d, detail::kEnterScale));
       const auto hit = hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale)));
@@ -67,6 +73,8 @@ class RayCore {
       const int kept = int(compressStore32(du, child, hn::RebindMask(du, hit), refs + count));
       compressStore32(d, enter, hit, dists + count);
       // Large meshes miss the cache: fetch what will be visited while the rest is tested.
+      // Large meshes miss the cache: fetch the first line of what will be visited (a node's
+      // x rows, a block's x coordinates) while the rest is tested.
       for (int k = count; k < count + kept; ++k) prefetch(refs[k]);
       count += kept;
     }
@@ -105,17 +113,10 @@ class RayCore {
 
  private:
   void prefetch(std::uint32_t ref) const {
-    const char* p;
-    std::size_t size;
-    if (BvhNode::isLeaf(ref)) {
-      p = reinterpret_cast<const char*>(mesh_.blocks +
-                                        BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
-      size = sizeof(TriangleBlock);
-    } else {
-      p = reinterpret_cast<const char*>(mesh_.nodes + ref);
-      size = sizeof(BvhNode);
-    }
-    for (std::size_t line = 0; line < size; line += 64) hwy::Prefetch(p + line);
+    if (BvhNode::isLeaf(ref))
+      hwy::Prefetch(mesh_.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
+    else
+      hwy::Prefetch(mesh_.nodes + ref);
   }
 
   const MeshView& mesh_;
@@ -141,12 +142,22 @@ detail::TraversalRay rayAt(const RaysView& r, std::size_t i) {
                               r.direction[1][i], r.direction[2][i], r.tMax[i]);
 }
 
+template <class Sink>
+void traverse(const MeshView& mesh, const detail::TraversalRay& ray, Sink& sink) {
+  if (ray.finiteInverse) {
+    RayCore<Sink, true> core(mesh, ray, sink);
+    traverseRay(mesh.nodes, mesh.nodeCount, core);
+  } else {
+    RayCore<Sink, false> core(mesh, ray, sink);
+    traverseRay(mesh.nodes, mesh.nodeCount, core);
+  }
+}
+
 void MeshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
   for (std::size_t i = 0; i < rays.count; ++i) {
     const detail::TraversalRay ray = rayAt(rays, i);
     Closest closest(ray.tMax);
-    RayCore<Closest> core(mesh, ray, closest);
-    traverseRay(mesh.nodes, mesh.nodeCount, core);
+    traverse(mesh, ray, closest);
     const MeshHit h = closest.result();
     id[i] = h.id, t[i] = h.t;
   }
@@ -156,8 +167,7 @@ void MeshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) 
   for (std::size_t i = 0; i < rays.count; ++i) {
     const detail::TraversalRay ray = rayAt(rays, i);
     Any any{ray.tMax};
-    RayCore<Any> core(mesh, ray, any);
-    traverseRay(mesh.nodes, mesh.nodeCount, core);
+    traverse(mesh, ray, any);
     hit[i] = any.found ? 1 : 0;
   }
 }

@@ -4,6 +4,8 @@
 #include <limits>
 #include <optional>
 
+#include <omp.h>
+
 #include "simdphys/bvh.hpp"
 
 namespace simdphys {
@@ -73,7 +75,12 @@ class Builder {
     int depth = 0;
 #pragma omp parallel
 #pragma omp single
-    depth = buildNode(all, nodes_);
+    {
+      // One thread builds straight into the node list: a task's own list and the copy that
+      // splices it in would only cost time (the tree is the same either way).
+      parallel_ = omp_get_num_threads() > 1;
+      depth = buildNode(all, nodes_);
+    }
     return depth;
   }
 
@@ -123,8 +130,9 @@ class Builder {
     }
     std::array<std::vector<BvhNode>, BvhNode::kWidth> subtrees;
     std::array<int, BvhNode::kWidth> depths{};
+    auto asTask = [&](int k) { return parallel_ && kids[k].count() > kParallelGrain; };
     for (int k = 0; k < used; ++k) {
-      if (kids[k].count() > kParallelGrain) {
+      if (asTask(k)) {
 #pragma omp task default(shared) firstprivate(k)
         depths[k] = buildNode(kids[k], subtrees[k]);
       }
@@ -146,7 +154,7 @@ class Builder {
         continue;
       }
       node.child[k] = std::uint32_t(out.size());
-      if (kids[k].count() > kParallelGrain) {
+      if (asTask(k)) {
 #pragma omp taskwait
         append(subtrees[k], out);
         depth = std::max(depth, 1 + depths[k]);
@@ -270,6 +278,7 @@ class Builder {
   std::vector<BvhNode>& nodes_;
   std::vector<PrimRef> prims_;
   BvhBuildOptions options_;
+  bool parallel_ = false;
 };
 
 // What validate() accepts, without building its message for each of a million boxes.

@@ -26,7 +26,8 @@ struct TraversalRay {
   WatertightRay watertight;     // the scalar triangle test's precomputation
   simd::WatertightQuery query;  // the same, as the kernels take it
   float origin[3], inverse[3];
-  bool negative[3];  // sign bit of the direction: the near face is the max face
+  bool negative[3];    // sign bit of the direction: the near face is the max face
+  bool finiteInverse;  // no direction component is zero, so no slab product can be NaN
   float tMax;
 };
 
@@ -42,6 +43,8 @@ inline TraversalRay traversalRay(float ox, float oy, float oz, float dx, float d
     r.inverse[a] = 1.0f / d[a];
     r.negative[a] = std::signbit(d[a]);
   }
+  r.finiteInverse =
+      std::isfinite(r.inverse[0]) && std::isfinite(r.inverse[1]) && std::isfinite(r.inverse[2]);
   r.tMax = tMax;
   return r;
 }
