@@ -1,10 +1,12 @@
-// Batch 3D queries: closest ray hit against a stream of boxes, spheres or triangles, on every
-// path, with the largest error of t against the same query in double precision.
+// Batch 3D queries: closest ray hit against a stream of boxes, spheres or triangles, and one OBB
+// against a stream of OBBs, on every path, with the error against the same queries in double
+// precision.
 #include <cmath>
 
 #include "bench_common.hpp"
 #include "simd/kernels.hpp"
 #include "simdphys/geometry3d/batch.hpp"
+#include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
 #include "src/views.hpp"
 
@@ -121,9 +123,93 @@ void autovecBody(benchmark::State& state, const Stream& stream, Kernel kernel) {
   state.counters["result"] = double(hits);
 }
 
+// ---- one OBB against many (docs/workloads.md, "OBBs") ----
+
+constexpr std::size_t kObbQueries = 16, kObbBoxes = 100'000;
+
+Mat3f randomRotation(scenes::Random& rnd) {
+  const Vec3f axis = rnd.unitDirection();
+  return axisAngle(axis, rnd.uniform(0, 3.14159265f));
+}
+
+Obb randomObb(scenes::Random& rnd, float spread, float minHalf, float maxHalf) {
+  const Vec3f c(rnd.uniform(-spread, spread), rnd.uniform(-spread, spread),
+                rnd.uniform(-spread, spread));
+  const Vec3f h(rnd.uniform(minHalf, maxHalf), rnd.uniform(minHalf, maxHalf),
+                rnd.uniform(minHalf, maxHalf));
+  return {c, h, randomRotation(rnd)};
+}
+
+// Seed 9: 100,000 boxes in [-10, 10]^3, half extents 0.1 to 1.5, then 16 queries in [-5, 5]^3,
+// half extents 0.5 to 3; every orientation a random axis and angle.
+struct ObbWorkload {
+  ObbStream boxes;
+  std::vector<Obb> queries;
+  std::uint64_t overlaps = 0;   // scalar intersects(), float: what every path must find
+  std::uint64_t checksum = 0;   // sum of q * N + i over the overlapping pairs
+  std::uint64_t differing = 0;  // pairs whose float answer differs from intersects() in double
+};
+
+const ObbWorkload& obbWorkload() {
+  static const ObbWorkload w = [] {
+    scenes::Random rnd(9);
+    ObbWorkload out;
+    for (std::size_t i = 0; i < kObbBoxes; ++i) out.boxes.push(randomObb(rnd, 10, 0.1f, 1.5f));
+    for (std::size_t q = 0; q < kObbQueries; ++q) out.queries.push_back(randomObb(rnd, 5, 0.5f, 3));
+    const std::size_t n = out.boxes.size();
+    for (std::size_t q = 0; q < kObbQueries; ++q)
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool hit = intersects(out.queries[q], out.boxes[i]);
+        out.overlaps += hit;
+        out.checksum += hit ? q * n + i : 0;
+        out.differing +=
+            hit != intersects(cast<double>(out.queries[q]), cast<double>(out.boxes[i]));
+      }
+    return out;
+  }();
+  return w;
+}
+
+// Runs `find(query, out)` for every query, then checks the pairs against the scalar test's.
+template <class Find>
+void obbBody(benchmark::State& state, Find find) {
+  const ObbWorkload& w = obbWorkload();
+  std::vector<std::uint32_t> out;
+  std::uint64_t overlaps = 0;
+  for (auto _ : state) {
+    overlaps = 0;
+    for (const Obb& q : w.queries) overlaps += find(q, out);
+    benchmark::DoNotOptimize(overlaps);
+  }
+  std::uint64_t checksum = 0;
+  for (std::size_t q = 0; q < w.queries.size(); ++q) {
+    const std::size_t found = find(w.queries[q], out);
+    for (std::size_t k = 0; k < found; ++k) checksum += q * w.boxes.size() + out[k];
+  }
+  state.SetItemsProcessed(std::int64_t(state.iterations() * w.queries.size() * w.boxes.size()));
+  if (!checkExact(state, overlaps, w.overlaps)) return;
+  if (checksum != w.checksum) state.SkipWithError("the pairs differ from the scalar test's");
+  state.counters["differing"] = double(w.differing);  // the same on every path: bit-identical
+}
+
 }  // namespace
 
 void registerGeometry3dBenchmarks() {
+  registerPerPath("obb_obbs", "sat", kObbBoxes, [](benchmark::State& state) {
+    obbBody(state, [](const Obb& q, std::vector<std::uint32_t>& out) {
+      return overlapping(q, obbWorkload().boxes, out);
+    });
+  });
+  registerPerPath(
+      "obb_obbs", "autovec", kObbBoxes,
+      [](benchmark::State& state) {
+        obbBody(state, [](const Obb& q, std::vector<std::uint32_t>& out) {
+          out.resize(obbWorkload().boxes.padded());
+          return simd::obbOverlapsObbsAutovec(obbQuery(q), view(obbWorkload().boxes), out.data());
+        });
+      },
+      false);
+
   const auto& boxes = aabbWorkload(100'000).boxes;
   registerPerPath("ray_boxes", "closest", boxes.size(), [&boxes](benchmark::State& state) {
     rayBody(state, boxes, [&](std::uint32_t i) { return cast<double>(boxes[i]); });

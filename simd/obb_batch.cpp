@@ -9,6 +9,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "simd/kernels.hpp"
@@ -107,13 +108,15 @@ HWY_INLINE V radius(const V* h, V d0, V d1, V d2) {
 }
 
 // Whether box b is separated from the query on one of the 15 axes, or-ed into `separated` (whose
-// set lanes are taken as already decided: padding). `done(separated)` is asked after each axis;
-// true stops the test (the kernel: all lanes separated; the baseline: never).
+// set lanes are taken as already decided: padding). The loops are unrolled by request: GCC
+// vectorises the plain-loop baseline only when no inner loop remains. `done(separated)` is asked
+// after each axis; true stops the test (the kernel: all lanes separated; the baseline: never).
 template <class V, class M, class Done>
 HWY_INLINE M satSeparated(const QueryLanes<V>& q, const BoxLanes<V>& b, M separated, Done done) {
   const BoxLanes<V>& a = q.box;
   // Both boxes relative to the midpoint m = a.c * 0.5 + b.c * 0.5, as the scalar does.
   V ca[3], cb[3];
+#pragma GCC unroll 9
   for (int k = 0; k < 3; ++k) {
     const V m = q.halfCenter[k] + b.c[k] * q.half;
     ca[k] = a.c[k] - m;
@@ -125,9 +128,12 @@ HWY_INLINE M satSeparated(const QueryLanes<V>& q, const BoxLanes<V>& b, M separa
   // r[i][j] = u_i . v_j: the dot of a query axis with a box axis is the same number whichever of
   // the two is the projection axis (products commute), so both face groups share it.
   V r[3][3];
+#pragma GCC unroll 9
   for (int i = 0; i < 3; ++i)
+#pragma GCC unroll 9
     for (int j = 0; j < 3; ++j) r[i][j] = dot(a.u[i], b.u[j]);
-  // The query's face axes first: its own radius is a constant there.
+      // The query's face axes first: its own radius is a constant there.
+#pragma GCC unroll 9
   for (int i = 0; i < 3; ++i) {
     const V rb = radius(b.h, r[i][0], r[i][1], r[i][2]);
     separated = either(separated, apart(dot(ca, a.u[i]), q.ownRadius[i], dot(cb, a.u[i]), rb,
@@ -136,8 +142,11 @@ HWY_INLINE M satSeparated(const QueryLanes<V>& q, const BoxLanes<V>& b, M separa
   }
   // The box's face axes; g[k][j] = v_k . v_j (the diagonal is |v_j|^2, Eigen's squaredNorm).
   V g[3][3], lengthB[3];
+#pragma GCC unroll 9
   for (int j = 0; j < 3; ++j)
+#pragma GCC unroll 9
     for (int k = 0; k <= j; ++k) g[k][j] = g[j][k] = dot(b.u[k], b.u[j]);
+#pragma GCC unroll 9
   for (int j = 0; j < 3; ++j) {
     lengthB[j] = sqrtOf(g[j][j]);
     const V ra = radius(a.h, r[0][j], r[1][j], r[2][j]);
@@ -148,7 +157,9 @@ HWY_INLINE M satSeparated(const QueryLanes<V>& q, const BoxLanes<V>& b, M separa
   }
   // The edge axes u_i x v_j (Eigen's cross), skipped where the two are parallel: intersect.hpp's
   // crossAxis, |L| > tolerance * (|u_i| |v_j|).
+#pragma GCC unroll 9
   for (int i = 0; i < 3; ++i)
+#pragma GCC unroll 9
     for (int j = 0; j < 3; ++j) {
       const V* u = a.u[i];
       const V* v = b.u[j];
@@ -184,19 +195,34 @@ std::size_t ObbOverlapsObbs(const ObbQuery& query, const ObbsView& v, std::uint3
   });
 }
 
-// The baseline: the same SAT as a plain loop over the boxes, every axis, no early exit.
+// The baseline: the same SAT as a plain loop over the boxes, every axis, no early exit. A block's
+// answers go to an array first, so that the loop computing them carries no dependence between
+// iterations (a compacting store would stop the vectoriser), and are compacted after. This file is
+// compiled with -fno-math-errno (src/CMakeLists.txt), without which GCC keeps std::sqrt a call
+// that may set errno and vectorises nothing; the square roots are the same IEEE ones.
 std::size_t ObbOverlapsObbsAutovec(const ObbQuery& query, const ObbsView& v, std::uint32_t* out) {
   const QueryLanes<float> q = queryLanes<float>(query, [](float x) { return x; });
+  constexpr std::size_t kBlock = 256;
   std::size_t count = 0;
-  for (std::size_t i = 0; i < v.count; ++i) {
-    BoxLanes<float> b;
-    for (int k = 0; k < 3; ++k) {
-      b.c[k] = v.center[k][i];
-      b.h[k] = v.half[k][i];
-      for (int j = 0; j < 3; ++j) b.u[j][k] = v.axis[j][k][i];
+  for (std::size_t start = 0; start < v.count; start += kBlock) {
+    const std::size_t n = std::min(kBlock, v.count - start);
+    bool keep[kBlock];
+    for (std::size_t e = 0; e < n; ++e) {
+      const std::size_t i = start + e;
+      BoxLanes<float> b;
+#pragma GCC unroll 3
+      for (int k = 0; k < 3; ++k) {
+        b.c[k] = v.center[k][i];
+        b.h[k] = v.half[k][i];
+#pragma GCC unroll 3
+        for (int j = 0; j < 3; ++j) b.u[j][k] = v.axis[j][k][i];
+      }
+      keep[e] = !satSeparated(q, b, false, [](bool) { return false; });
     }
-    out[count] = static_cast<std::uint32_t>(i);
-    count += !satSeparated(q, b, false, [](bool) { return false; });
+    for (std::size_t e = 0; e < n; ++e) {
+      out[count] = static_cast<std::uint32_t>(start + e);
+      count += keep[e];
+    }
   }
   return count;
 }
