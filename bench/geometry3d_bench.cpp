@@ -132,11 +132,13 @@ Mat3f randomRotation(scenes::Random& rnd) {
   return axisAngle(axis, rnd.uniform(0, 3.14159265f));
 }
 
+// Braces: list-initialisation evaluates the draws left to right (a constructor's arguments, in
+// parentheses, in an unspecified order), so the workload is the same with every compiler.
 Obb randomObb(scenes::Random& rnd, float spread, float minHalf, float maxHalf) {
-  const Vec3f c(rnd.uniform(-spread, spread), rnd.uniform(-spread, spread),
-                rnd.uniform(-spread, spread));
-  const Vec3f h(rnd.uniform(minHalf, maxHalf), rnd.uniform(minHalf, maxHalf),
-                rnd.uniform(minHalf, maxHalf));
+  const Vec3f c{rnd.uniform(-spread, spread), rnd.uniform(-spread, spread),
+                rnd.uniform(-spread, spread)};
+  const Vec3f h{rnd.uniform(minHalf, maxHalf), rnd.uniform(minHalf, maxHalf),
+                rnd.uniform(minHalf, maxHalf)};
   return {c, h, randomRotation(rnd)};
 }
 
