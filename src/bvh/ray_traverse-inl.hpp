@@ -4,8 +4,8 @@
 // provides BvhNode, <cstdint>, <limits> and detail::TraversalRay (src/bvh/mesh_ray.hpp).
 
 // The closest hit under W2's rule: the smallest t, and among the hits within kTieWindow of it the
-// smallest id. The hits inside the window are kept (up to kMaxTies; beyond, the farthest give way
-// to nearer ones), since a nearer hit found later narrows the window and may drop its winner
+// smallest id. The hits inside the window are kept (up to kMaxTies; beyond, the farthest, then the
+// largest ids, give way), since a nearer hit found later narrows the window and may drop its winner
 // while keeping another. `bound` is what the traversal culls against: a hit beyond it cannot
 // change the answer.
 class ClosestHits {
@@ -30,10 +30,12 @@ class ClosestHits {
       ties_[count_++] = {t, id};
       return;
     }
-    int farthest = 0;
+    // Full: the worst entry (farthest, then largest id) gives way to a better one, so equal-t
+    // ties keep the smallest ids.
+    int worst = 0;
     for (int k = 1; k < count_; ++k)
-      if (ties_[k].t > ties_[farthest].t) farthest = k;
-    if (t < ties_[farthest].t) ties_[farthest] = {t, id};
+      if (worse(ties_[k], ties_[worst])) worst = k;
+    if (worse(ties_[worst], {t, id})) ties_[worst] = {t, id};
   }
 
   // The winner: id kNoHit and t = inf if nothing was hit.
@@ -49,6 +51,7 @@ class ClosestHits {
     float t;
     std::uint32_t id;
   };
+  static bool worse(const Tie& a, const Tie& b) { return a.t > b.t || (a.t == b.t && a.id > b.id); }
   float tMax_, bound_;
   float tMin_ = std::numeric_limits<float>::infinity();
   int count_ = 0;

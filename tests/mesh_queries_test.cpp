@@ -1,0 +1,193 @@
+// Mesh queries other than rays, on every path: segments, overlap with every shape, refit; the
+// tree's structure over triangles; procedural meshes; and the errors meshes report.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "expect_error.hpp"
+#include "mesh_oracles.hpp"
+#include "paths.hpp"
+#include "rays.hpp"
+
+namespace simdphys {
+namespace {
+
+using test::OnEveryPath;
+
+class MeshQueries : public OnEveryPath {};
+SIMDPHYS_ON_EVERY_PATH(MeshQueries);
+
+// Every triangle is in exactly one leaf, leaves hold 1..8, each block lane holds its triangle's
+// vertices, and every slot box contains what is below it.
+TEST_P(MeshQueries, TreeStructureOverTriangles) {
+  const Mesh soup = test::randomSoup(51, 5000, 60, 3);
+  const MeshBvh bvh(soup);
+  const Bvh& tree = bvh.bvh();
+  std::vector<int> seen(soup.size(), 0);
+  for (const BvhNode& n : tree.nodes())
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      const std::uint32_t c = n.child[k];
+      if (c == BvhNode::kEmpty || !BvhNode::isLeaf(c)) continue;
+      const std::uint32_t first = BvhNode::leafFirst(c), count = BvhNode::leafCount(c);
+      ASSERT_EQ(first % TriangleBlock::kWidth, 0u);
+      ASSERT_LE(count, MeshBvh::kLeafSize);
+      const TriangleBlock& b = bvh.blocks()[first / TriangleBlock::kWidth];
+      for (std::uint32_t l = 0; l < count; ++l) {
+        const std::uint32_t id = tree.order()[first + l];
+        ASSERT_EQ(b.id[l], id);
+        ++seen[id];
+        const Triangle t = soup.triangle(id);
+        for (const Vec3f& v : {t.a, t.b, t.c}) {
+          EXPECT_LE(n.minX[k], v.x());
+          EXPECT_GE(n.maxX[k], v.x());
+          EXPECT_LE(n.minY[k], v.y());
+          EXPECT_GE(n.maxY[k], v.y());
+          EXPECT_LE(n.minZ[k], v.z());
+          EXPECT_GE(n.maxZ[k], v.z());
+        }
+        EXPECT_EQ(b.v[2][1][l], t.c.y());
+      }
+    }
+  for (std::size_t i = 0; i < soup.size(); ++i) ASSERT_EQ(seen[i], 1) << "triangle " << i;
+  EXPECT_LE(tree.depth(), BvhNode::kMaxDepth);
+}
+
+TEST_P(MeshQueries, SegmentsEqualBruteForce) {
+  const Mesh soup = test::randomSoup(52, 2000, 30, 4);
+  const MeshBvh bvh(soup);
+  scenes::Random r(53);
+  std::size_t crossing = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const Vec3f a(r.uniform(-35, 35), r.uniform(-35, 35), r.uniform(-35, 35));
+    const Vec3f b = a + r.uniform(0, 20) * r.unitDirection();
+    const Segment s{a, b};
+    // Brute force: raycast.hpp's linecast per triangle (t a distance), the same rule.
+    std::vector<MeshHit> hits;
+    for (std::uint32_t k = 0; k < soup.size(); ++k)
+      if (auto h = linecast(soup.triangle(k), s)) hits.push_back({k, h->t});
+    const MeshHit expected = test::closestByRule(hits);
+    const MeshHit found = bvh.linecast(s);
+    EXPECT_EQ(found.id, expected.id) << "segment " << i;
+    // t: the tree's t (in units of b - a) times the length, against the per-triangle linecast's
+    // same product: exact.
+    if (expected.hit()) {
+      EXPECT_EQ(found.t, expected.t) << "segment " << i;
+    }
+    bool any = false;
+    for (std::uint32_t k = 0; k < soup.size() && !any; ++k) any = linetest(soup.triangle(k), s);
+    EXPECT_EQ(bvh.linetest(s), any) << "segment " << i;
+    crossing += any;
+  }
+  EXPECT_GT(crossing, 50u);
+  // A segment lying in a triangle's plane, inside it: no crossing, but the linetest touches.
+  Mesh flat;
+  flat.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 0, 4}};
+  flat.triangles = {{0, 1, 2}};
+  const MeshBvh one(flat);
+  const Segment inPlane{{0.5f, 0, 0.5f}, {1.5f, 0, 0.5f}};
+  EXPECT_FALSE(one.linecast(inPlane).hit());
+  EXPECT_TRUE(one.linetest(inPlane));
+}
+
+TEST_P(MeshQueries, OverlapsEqualBruteForce) {
+  const Mesh soup = test::randomSoup(54, 3000, 40, 3);
+  const MeshBvh bvh(soup);
+  scenes::Random r(55);
+  std::size_t found = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Vec3f c(r.uniform(-45, 45), r.uniform(-45, 45), r.uniform(-45, 45));
+    const Sphere sphere{c, r.uniform(0, 6)};
+    const Vec3f h(r.uniform(0, 5), r.uniform(0, 5), r.uniform(0, 5));
+    const Aabb box{c - h, c + h};
+    const Obb obb{c, h, Eigen::AngleAxisf(r.uniform(0, 3), r.unitDirection()).toRotationMatrix()};
+    const Triangle tri{c + 5 * r.unitDirection(), c + 5 * r.unitDirection(),
+                       c + 5 * r.unitDirection()};
+    const std::string at = "query " + std::to_string(i);
+    EXPECT_EQ(bvh.overlapping(sphere), test::bruteOverlapping(soup, sphere)) << at;
+    EXPECT_EQ(bvh.overlapping(box), test::bruteOverlapping(soup, box)) << at;
+    EXPECT_EQ(bvh.overlapping(obb), test::bruteOverlapping(soup, obb)) << at;
+    EXPECT_EQ(bvh.overlapping(tri), test::bruteOverlapping(soup, tri)) << at;
+    found += bvh.overlapping(sphere).size();
+  }
+  EXPECT_GT(found, 100u);
+}
+
+// Refit after the heightfield's heights change: the same answers as a rebuild on the moved mesh
+// (both equal brute force on it, exactly: the triangle tests do not depend on the tree).
+TEST_P(MeshQueries, RefitAnswersLikeARebuild) {
+  Mesh mesh = scenes::makeHeightfield(33);
+  MeshBvh bvh(mesh);
+  std::vector<Vec3f> moved = mesh.vertices;
+  for (Vec3f& v : moved) v.y() = 2 * v.y() + 0.1f * v.x() - 5;
+  bvh.refit(moved);
+  mesh.vertices = moved;
+  const MeshBvh rebuilt(mesh);
+  const RayStream rays = scenes::makeIncoherentRays(3000);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const MeshHit a = bvh.raycast(rays[i]), b = rebuilt.raycast(rays[i]);
+    const MeshHit expected = test::bruteRaycast(mesh, rays[i]);
+    EXPECT_EQ(a.id, expected.id) << "ray " << i;
+    EXPECT_EQ(b.id, expected.id) << "ray " << i;
+    if (expected.hit()) {
+      EXPECT_EQ(a.t, expected.t) << "ray " << i;
+    }
+  }
+  const Sphere s{{10, 0, 10}, 8};
+  EXPECT_EQ(bvh.overlapping(s), test::bruteOverlapping(mesh, s));
+  test::expectError([&] { bvh.refit(std::vector<Vec3f>(3)); }, "MeshBvh::refit: 3 vertices");
+  moved[7].x() = NAN;
+  test::expectError([&] { bvh.refit(moved); }, "vertex 7");
+}
+
+// Procedural meshes: closed and facing out (every normal points away from the centre), so a ray
+// from inside hits from the back and one from outside at the centre hits the front.
+TEST(ProceduralMeshes, BoxAndSphereAreClosedAndFaceOut) {
+  const Vec3f centre(1, 2, 3);
+  const Mesh meshes[] = {boxMesh({centre - Vec3f(1, 2, 3), centre + Vec3f(1, 2, 3)}),
+                         sphereMesh(centre, 2, 8, 12)};
+  for (const Mesh& m : meshes) {
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      const Triangle t = m.triangle(i);
+      EXPECT_GT(t.normal().dot((t.a + t.b + t.c) / 3 - centre), 0) << "triangle " << i;
+    }
+    const MeshBvh bvh(m);
+    scenes::Random r(56);
+    for (int k = 0; k < 500; ++k)
+      EXPECT_TRUE(bvh.raycast({centre, r.unitDirection()}).hit()) << "ray " << k;
+  }
+  EXPECT_EQ(meshes[0].size(), 12u);
+  EXPECT_EQ(meshes[1].size(), 2u * 12 * 7);
+  const Mesh hf = scenes::makeHeightfield(3);
+  ASSERT_EQ(hf.size(), 8u);
+  EXPECT_EQ(hf.triangles[1], (std::array<std::uint32_t, 3>{0, 4, 3}));  // W2's second triangle
+}
+
+TEST(MeshErrors, BadMeshesAreNamed) {
+  Mesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
+  m.triangles = {{0, 1, 2}, {0, 1, 7}};
+  test::expectError([&] { MeshBvh b(m); }, "MeshBvh: triangle 1: vertex index 7 is out of range");
+  m.triangles = {{0, 1, 2}, {0, 1, 3}};
+  test::expectError([&] { MeshBvh b(m); }, "triangle 1 (vertices 0, 1, 3) is degenerate");
+  m.triangles = {{0, 1, 2}};
+  m.vertices[2].z() = INFINITY;
+  test::expectError([&] { MeshBvh b(m); }, "vertex 2");
+  test::expectError([] { heightfieldMesh(1, 4, 0, 1, 0, 1, [](double, double) { return 0.0; }); },
+                    "heightfieldMesh: 1 x 4");
+  test::expectError([] { sphereMesh({0, 0, 0}, 1, 1, 8); }, "sphereMesh");
+  Bvh tree;
+  std::vector<Aabb> bounds = {{{0, 0, 0}, {1, 1, 1}}, {{0, 0, 0}, {-1, 1, 1}}};
+  test::expectError([&] { tree.build(bounds, {4, 4}); }, "Bvh::build: bounds 1: min.x");
+  test::expectError([&] { tree.build(bounds, {17, 17}); }, "maxLeafSize 17");
+  const MeshBvh bvh(scenes::makeHeightfield(5));
+  std::vector<std::uint32_t> out;
+  test::expectError(
+      [&] {
+        bvh.bvh().query({{0, 0, 0}, {1, 1, 1}}, out);
+      },
+      "Bvh::query: the tree has leaves of several primitives");
+}
+
+}  // namespace
+}  // namespace simdphys
