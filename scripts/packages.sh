@@ -15,6 +15,6 @@ ensure_packages() {
 
 # What building and testing simdphys needs.
 SIMDPHYS_BUILD_PACKAGES=(g++ cmake make pkg-config libeigen3-dev libhwy-dev libgtest-dev
-  libbenchmark-dev libomp-dev)
+  libbenchmark-dev libomp-dev libtinyobjloader-dev)
 
 jobs() { nproc 2>/dev/null || echo 2; }

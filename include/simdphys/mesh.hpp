@@ -41,7 +41,7 @@ Mesh boxMesh(const Aabb& box);
 // A UV sphere: `rings` bands of latitude (>= 2) and `segments` of longitude (>= 3), facing out.
 Mesh sphereMesh(const Vec3f& center, float radius, std::uint32_t rings, std::uint32_t segments);
 
-// Reads a Wavefront OBJ file's vertices and faces (polygons are fanned into triangles; normals,
+// Reads a Wavefront OBJ file's vertices and faces (polygons triangulated by tinyobjloader; normals,
 // texture coordinates and materials are ignored). Throws Error naming the file and, where the
 // parser tells, the line: a missing or unreadable file, a malformed line, an index out of range,
 // and everything validate() rejects.
