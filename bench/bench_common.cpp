@@ -24,6 +24,19 @@ const scenes::CullWorkload& cullWorkload() {
   return w;
 }
 
+const SphereStream& sphereField() {
+  static const SphereStream s = [] {
+    scenes::Random rnd(7);
+    SphereStream out;
+    for (int i = 0; i < 100'000; ++i) {
+      Vec3f c(rnd.uniform(-100, 100), rnd.uniform(-100, 100), rnd.uniform(-100, 100));
+      out.push({c, rnd.uniform(0.1f, 1.5f)});
+    }
+    return out;
+  }();
+  return s;
+}
+
 namespace {
 std::string name(const std::string& task, const std::string& method, const std::string& path,
                  std::size_t n) {

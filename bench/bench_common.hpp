@@ -15,6 +15,7 @@
 #include <string>
 
 #include "simdphys/core.hpp"
+#include "simdphys/geometry3d/streams.hpp"
 #include "workloads.hpp"
 
 namespace simdphys::bench {
@@ -22,6 +23,8 @@ namespace simdphys::bench {
 const scenes::AabbWorkload& aabbWorkload(std::size_t n);
 const scenes::AabbReference& aabbReference(std::size_t n);
 const scenes::CullWorkload& cullWorkload();
+// 100,000 spheres from seed 7: centres uniform in the W1 cube [-100, 100]^3, radii in [0.1, 1.5].
+const SphereStream& sphereField();
 
 using Body = std::function<void(benchmark::State&)>;
 

@@ -29,19 +29,6 @@ const std::vector<Ray>& rays() {
   return r;
 }
 
-const SphereStream& spheres() {
-  static const SphereStream s = [] {
-    scenes::Random rnd(7);
-    SphereStream out;
-    for (int i = 0; i < 100'000; ++i) {
-      Vec3f c(rnd.uniform(-100, 100), rnd.uniform(-100, 100), rnd.uniform(-100, 100));
-      out.push({c, rnd.uniform(0.1f, 1.5f)});
-    }
-    return out;
-  }();
-  return s;
-}
-
 // The W2 heightfield, 129 x 129 vertices (32,768 triangles) so a brute-force batch stays short.
 const TriangleStream& triangles() {
   static const TriangleStream t = [] {
@@ -216,20 +203,32 @@ void registerGeometry3dBenchmarks() {
   registerPerPath("ray_boxes", "closest", boxes.size(), [&boxes](benchmark::State& state) {
     rayBody(state, boxes, [&](std::uint32_t i) { return cast<double>(boxes[i]); });
   });
-  registerPerPath("ray_spheres", "closest", spheres().size(), [](benchmark::State& state) {
-    rayBody(state, spheres(), [](std::uint32_t i) { return cast<double>(spheres()[i]); });
+  registerPerPath("ray_spheres", "closest", sphereField().size(), [](benchmark::State& state) {
+    rayBody(state, sphereField(), [](std::uint32_t i) { return cast<double>(sphereField()[i]); });
   });
   registerPerPath(
       "ray_boxes", "autovec", boxes.size(),
       [&boxes](benchmark::State& state) { autovecBody(state, boxes, simd::rayClosestBoxAutovec); },
       false);
   registerPerPath(
-      "ray_spheres", "autovec", spheres().size(),
-      [](benchmark::State& state) { autovecBody(state, spheres(), simd::rayClosestSphereAutovec); },
+      "ray_spheres", "autovec", sphereField().size(),
+      [](benchmark::State& state) {
+        autovecBody(state, sphereField(), simd::rayClosestSphereAutovec);
+      },
       false);
   registerPerPath("ray_triangles", "closest", triangles().size(), [](benchmark::State& state) {
     rayBody(state, triangles(), [](std::uint32_t i) { return cast<double>(triangles()[i]); });
   });
+  registerPerPath(
+      "ray_triangles", "autovec", triangles().size(),
+      [](benchmark::State& state) {
+        autovecBody(state, triangles(), [](const simd::RayQuery& q, const simd::TrianglesView& v) {
+          const WatertightRay w(Vec3f(q.ox, q.oy, q.oz), Vec3f(q.dx, q.dy, q.dz));
+          return simd::rayClosestTriangleAutovec(
+              {q.ox, q.oy, q.oz, w.kx, w.ky, w.kz, w.sx, w.sy, w.sz, q.tMax}, v);
+        });
+      },
+      false);
 }
 
 }  // namespace simdphys::bench

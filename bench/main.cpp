@@ -13,6 +13,7 @@ void registerAabbBenchmarks();
 void registerCullBenchmarks();
 void registerBandwidthBenchmarks();
 void registerGeometry3dBenchmarks();
+void registerOverlap3dBenchmarks();
 }  // namespace simdphys::bench
 
 namespace {
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   bench::registerCullBenchmarks();
   bench::registerBandwidthBenchmarks();
   bench::registerGeometry3dBenchmarks();
+  bench::registerOverlap3dBenchmarks();
 #ifdef SIMDPHYS_HAVE_BULLET
   bench::registerBulletBenchmarks();
 #endif
