@@ -40,6 +40,21 @@ TEST(Cameras, OrthographicRaysAreParallel) {
   EXPECT_LT((r.origin - Vec3f(1, 1, 9)).norm(), 1e-5f);
 }
 
+TEST(Cameras, PrimaryRaysAreThePixelRays) {
+  const Camera c = Camera::perspective({0, 60, -140}, Vec3f::Zero(), Vec3f::UnitY(), kPi / 3, 32,
+                                       24, 0.1f, 1000);
+  const RayStream rays = c.primaryRays();
+  ASSERT_EQ(rays.size(), 32u * 24u);
+  for (int j = 0; j < 24; ++j)
+    for (int i = 0; i < 32; ++i) {  // the same computation in the same order: to the bit
+      const Ray expected = c.ray(i + 0.5f, j + 0.5f), got = rays[j * 32 + i];
+      EXPECT_EQ(got.origin, expected.origin);
+      EXPECT_EQ(got.direction, expected.direction);
+    }
+  // Row 0 is the top: its rays point further up than the last row's.
+  EXPECT_GT(rays[0].direction.y(), rays[32 * 23].direction.y());
+}
+
 TEST(Cameras, OrbitCameraTurnsAroundItsTarget) {
   const Vec3f target(1, 2, 3);
   OrbitCamera orbit(target, 10);

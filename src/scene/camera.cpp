@@ -41,6 +41,25 @@ Ray Camera::ray(float px, float py) const {
   return {r.origin, r.direction};
 }
 
+RayStream Camera::primaryRays() const {
+  const float w = viewport[2], h = viewport[3];
+  if (!(w >= 1 && h >= 1 && w == std::floor(w) && h == std::floor(h)))
+    throw Error("Camera::primaryRays: the viewport's width and height must be whole numbers");
+  // As screenToRay: the same float inverse, the same unprojection and normalisation.
+  const Mat4f inverse = (projection * view).inverse();
+  RayStream rays;
+  rays.reserve(std::size_t(w) * std::size_t(h));
+  for (float j = 0; j < h; ++j)
+    for (float i = 0; i < w; ++i) {
+      const float px = viewport[0] + i + 0.5f, py = viewport[1] + j + 0.5f;
+      const Vec3f nearPoint = unproject(Vec3f(px, py, 0), viewport, inverse);
+      const Vec3f farPoint = unproject(Vec3f(px, py, 1), viewport, inverse);
+      rays.push({nearPoint,
+                 detail::normalized(farPoint - nearPoint, "Camera::primaryRays", "far - near")});
+    }
+  return rays;
+}
+
 Vec3f Camera::eye() const {
   // view = [R | -R e]: e = -R^T t, R orthonormal.
   const Mat3f r = view.topLeftCorner<3, 3>();

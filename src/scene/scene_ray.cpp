@@ -1,6 +1,7 @@
 // Scene raycasts: one ray through the top-level BVH, or a stream of rays model by model.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "simdphys/scene/scene.hpp"
@@ -83,46 +84,105 @@ ModelHit Scene::raycast(const Ray& ray, float tMax) const {
   return best;
 }
 
+namespace {
+
+// The rays of a stream as the box filter reads them: origins and inverse directions, SoA. A zero
+// direction component becomes +-1e-30 before inverting, so the products below never meet
+// 0 * inf: a ray parallel to a slab gets a huge t of the right sign (or 0 on the slab's plane),
+// which keeps every box the ray can touch (the filter may keep a few it cannot; never loses one).
+struct RaySlabs {
+  std::array<std::vector<float>, 3> origin, inverse;
+  explicit RaySlabs(const RayStream& rays) {
+    for (int a = 0; a < 3; ++a) {
+      const float* o = rays.origin(a).data();
+      const float* d = rays.direction(a).data();
+      origin[a].assign(o, o + rays.size());
+      inverse[a].resize(rays.size());
+      for (std::size_t i = 0; i < rays.size(); ++i)
+        inverse[a][i] = 1.0f / (d[i] == 0 ? std::copysign(1e-30f, d[i]) : d[i]);
+    }
+  }
+  // keep[i] = 1 where ray i enters the box before limit[i]: a plain loop the compiler
+  // vectorises.
+  void enters(const Aabb& box, const float* limit, std::uint8_t* keep) const {
+    const std::size_t n = origin[0].size();
+    for (std::size_t i = 0; i < n; ++i) {
+      float t0 = 0, t1 = limit[i];
+      for (int a = 0; a < 3; ++a) {
+        const float tn = (box.min[a] - origin[a][i]) * inverse[a][i];
+        const float tf = (box.max[a] - origin[a][i]) * inverse[a][i];
+        t0 = std::max(t0, std::min(tn, tf));
+        t1 = std::min(t1, std::max(tn, tf));
+      }
+      keep[i] = t0 <= t1;
+    }
+  }
+};
+
+// Rays moved into a model's space, written straight into the stream's fields: RayStream::push
+// would validate each one again (they were validated entering the scene and an invertible
+// affine map keeps them finite and non-zero).
+class ModelRays : public RayStream {
+ public:
+  void fill(const RayStream& rays, std::span<const std::uint32_t> pick, const Mat4f& inverse) {
+    resize(pick.size());
+    for (std::size_t k = 0; k < pick.size(); ++k) {
+      const std::uint32_t i = pick[k];
+      const Vec3f o(rays.origin(0)[i], rays.origin(1)[i], rays.origin(2)[i]);
+      const Vec3f d(rays.direction(0)[i], rays.direction(1)[i], rays.direction(2)[i]);
+      const Vec3f lo = transformPoint(inverse, o), ld = transformDirection(inverse, d);
+      store(k, {lo.x(), lo.y(), lo.z(), ld.x(), ld.y(), ld.z(),
+                std::numeric_limits<float>::infinity()});
+    }
+  }
+};
+
+}  // namespace
+
 void Scene::raycast(const RayStream& rays, std::span<ModelHit> out) const {
   requireUpToDate("Scene::raycast");
   if (out.size() != rays.size())
     throw Error("Scene::raycast: " + std::to_string(rays.size()) + " rays but room for " +
                 std::to_string(out.size()) + " hits");
+  // The closest t so far, per ray, beside the hits: the box filter reads it as a stream.
+  std::vector<float> bestT(rays.tMax().data(), rays.tMax().data() + rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) {
     out[i] = ModelHit{};
-    out[i].t = rays.tMax()[i];
+    out[i].t = bestT[i];
   }
+  const RaySlabs slabs(rays);
+  std::vector<std::uint8_t> keep(rays.size());
   std::vector<std::uint32_t> candidates;
   std::vector<MeshHit> meshHits;
-  RayStream local;
+  ModelRays local;
   for (std::uint32_t m = 0; m < size(); ++m) {
-    const Aabb box = bounds_[m];
     const PlacedShape shape = placed(m);
+    slabs.enters(bounds_[m], bestT.data(), keep.data());
     candidates.clear();
-    for (std::uint32_t i = 0; i < rays.size(); ++i) {
-      float t;
-      if (enters(box.min, box.max, rays[i], out[i].t, t)) candidates.push_back(i);
-    }
+    for (std::uint32_t i = 0; i < rays.size(); ++i)
+      if (keep[i]) candidates.push_back(i);
     auto offer = [&](std::uint32_t i, std::optional<ModelHit> hit) {
       if (!hit) return;
       hit->model = m;
-      if (closer(*hit, out[i])) out[i] = *hit;
+      if (closer(*hit, out[i])) out[i] = *hit, bestT[i] = hit->t;
     };
     const auto* mesh = std::get_if<std::shared_ptr<const MeshBvh>>(&models_[m].shape);
     if (!mesh) {
       for (std::uint32_t i : candidates) offer(i, simdphys::raycast(shape, rays[i]));
       continue;
     }
-    // One stream in model space: t along the moved (not normalised) direction is world t.
-    local.clear();
-    local.reserve(candidates.size());
-    for (std::uint32_t i : candidates) {
-      const Ray r = rays[i];
-      local.push(
-          {transformPoint(inverse_[m], r.origin), transformDirection(inverse_[m], r.direction)});
+    // A model placed at the origin unscaled (a terrain, typically) that most rays reach takes
+    // the caller's stream as it is, saving the copy; the mesh's own tree rejects the others.
+    const bool whole = inverse_[m] == Mat4f::Identity() && 2 * candidates.size() > rays.size();
+    if (!whole) {
+      // One stream in model space: t along the moved (not normalised) direction is world t.
+      local.fill(rays, candidates, inverse_[m]);
+    } else {
+      candidates.resize(rays.size());
+      for (std::uint32_t i = 0; i < rays.size(); ++i) candidates[i] = i;
     }
     meshHits.assign(candidates.size(), MeshHit{});
-    (*mesh)->raycast(local, meshHits);
+    (*mesh)->raycast(whole ? rays : local, meshHits);
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       if (!meshHits[k].hit()) continue;
       const Vec3f n = (*mesh)->mesh().triangle(meshHits[k].id).normal();

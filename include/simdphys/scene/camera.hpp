@@ -6,6 +6,7 @@
 #pragma once
 
 #include "simdphys/math.hpp"
+#include "simdphys/mesh_bvh.hpp"
 #include "simdphys/scene.hpp"
 
 namespace simdphys {
@@ -31,6 +32,10 @@ struct Camera {
   Frustum frustum() const;
   // The world ray through the window point (px, py) (pixel centres at +0.5): screenToRay.
   Ray ray(float px, float py) const;
+  // The rays through every pixel centre of the viewport, in scanline order from the top-left:
+  // element j * width + i is ray(x + i + 0.5, y + j + 0.5), to the bit (the matrix is inverted
+  // once instead of per pixel). Throws Error unless the viewport's size is a whole number.
+  RayStream primaryRays() const;
   // The eye position (the inverse view's translation).
   Vec3f eye() const;
 };
