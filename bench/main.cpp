@@ -13,6 +13,7 @@ void registerAabbBenchmarks();
 void registerCullBenchmarks();
 void registerBandwidthBenchmarks();
 void registerGeometry3dBenchmarks();
+void registerSceneBenchmarks();
 void registerOverlap3dBenchmarks();
 }  // namespace simdphys::bench
 
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
   bench::registerCullBenchmarks();
   bench::registerBandwidthBenchmarks();
   bench::registerGeometry3dBenchmarks();
+  bench::registerSceneBenchmarks();
   bench::registerOverlap3dBenchmarks();
 #ifdef SIMDPHYS_HAVE_BULLET
   bench::registerBulletBenchmarks();
