@@ -313,14 +313,12 @@ EpaCoreResult<T> epaCore(const SA& A, const SB& B, const Vec3<T>& origin, const 
 // between the shapes' reference points, or +x if they coincide.
 template <class A, class B>
 std::optional<PenetrationT<ShapeScalarT<A>>> epa(const A& a, const B& b) {
-  detail::requireSameScalar<A, B>();
   using T = ShapeScalarT<A>;
-  const Vec3<T> origin = detail::referencePoint(a);
-  const Vec3<T> towardB = detail::referencePoint(b) - origin;
-  const detail::GjkRun<T> run = detail::runGjk(a, b, origin, towardB);
-  const T ra = detail::coreRadius(a), rb = detail::coreRadius(b);
-  const T core = run.overlap ? T(0) : std::sqrt(run.vv);
-  if (core - ra - rb > kTouchTolerance<T> * (run.scale + ra + rb)) return std::nullopt;
+  const detail::GjkSolution<T> g = detail::solveGjk(a, b);
+  if (!g.touching()) return std::nullopt;
+  const detail::GjkRun<T>& run = g.run;
+  const T ra = g.ra, rb = g.rb, core = g.core;
+  const Vec3<T>& origin = g.origin;
   PenetrationT<T> result;
   if (!run.overlap) {
     result.normal = -run.v / core;
@@ -329,7 +327,7 @@ std::optional<PenetrationT<ShapeScalarT<A>>> epa(const A& a, const B& b) {
     result.pointB = run.pointB() - rb * result.normal + origin;
     return result;
   }
-  const detail::EpaCoreResult<T> e = detail::epaCore(a, b, origin, run, towardB);
+  const detail::EpaCoreResult<T> e = detail::epaCore(a, b, origin, run, g.towardB);
   result.normal = e.normal;
   result.depth = e.depth + ra + rb;
   result.pointA = e.pointA + ra * e.normal + origin;

@@ -320,6 +320,29 @@ constexpr void requireSameScalar() {
   static_assert(std::is_floating_point_v<ShapeScalarT<A>>, "float or double expected");
 }
 
+// GJK from the shapes' reference points, with what both gjkDistance and epa read of it.
+template <class T>
+struct GjkSolution {
+  Vec3<T> origin, towardB;  // a point of A (the local origin); B's reference point from it
+  GjkRun<T> run;
+  T ra = 0, rb = 0;  // the radii around the cores
+  T core = 0;        // the cores' distance (0 when they overlap)
+  // The shapes are within the touching tolerance of each other, or overlap.
+  bool touching() const { return core - ra - rb <= kTouchTolerance<T> * (run.scale + ra + rb); }
+};
+template <class A, class B>
+GjkSolution<ShapeScalarT<A>> solveGjk(const A& a, const B& b) {
+  requireSameScalar<A, B>();
+  using T = ShapeScalarT<A>;
+  GjkSolution<T> g;
+  g.origin = referencePoint(a);
+  g.towardB = referencePoint(b) - g.origin;
+  g.run = runGjk(a, b, g.origin, g.towardB);
+  g.ra = coreRadius(a), g.rb = coreRadius(b);
+  g.core = g.run.overlap ? T(0) : std::sqrt(g.run.vv);
+  return g;
+}
+
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
@@ -328,18 +351,16 @@ constexpr void requireSameScalar() {
 // distance 0 and a common point.
 template <class A, class B>
 GjkResultT<ShapeScalarT<A>> gjkDistance(const A& a, const B& b) {
-  detail::requireSameScalar<A, B>();
   using T = ShapeScalarT<A>;
-  const Vec3<T> origin = detail::referencePoint(a);
-  const Vec3<T> towardB = detail::referencePoint(b) - origin;
-  const detail::GjkRun<T> run = detail::runGjk(a, b, origin, towardB);
-  const T ra = detail::coreRadius(a), rb = detail::coreRadius(b);
+  const detail::GjkSolution<T> g = detail::solveGjk(a, b);
+  const detail::GjkRun<T>& run = g.run;
+  const T ra = g.ra, rb = g.rb, core = g.core;
+  const Vec3<T>& origin = g.origin;
   const Vec3<T> ca = run.pointA(), cb = run.pointB();
   GjkResultT<T> result;
   result.iterations = run.iterations;
-  const T core = run.overlap ? T(0) : std::sqrt(run.vv);
   const T distance = core - ra - rb;
-  if (distance <= kTouchTolerance<T> * (run.scale + ra + rb)) {
+  if (g.touching()) {
     result.intersecting = true;
     result.distance = 0;
     // A common point: where the cores meet, or on the segment between the cores' closest
