@@ -5,19 +5,40 @@
 namespace simdphys::bench {
 namespace {
 
+// Traversal modes (RayStreamOptions): "bvh" one ray at a time; "auto" the default options (the
+// stream's consecutive rays as packets where they share an octant); "packet16" and "packet8"
+// packets of the image's 4 x 4 and 4 x 2 tiles (as Embree's rtcIntersect16 run), coherent set only.
+struct RaysMethod {
+  const char* name;
+  RayStreamOptions options;
+  bool coherentOnly;
+};
+const RaysMethod kRaysMethods[] = {
+    {"bvh", {RayStreamOptions::Mode::kSingle, 0, 0}, false},
+    {"auto", {}, false},
+    {"packet16", {RayStreamOptions::Mode::kPackets, 16, scenes::kCameraWidth}, true},
+    {"packet8", {RayStreamOptions::Mode::kPackets, 8, scenes::kCameraWidth}, true},
+};
+
 void registerRays() {
-  for (RaysKind kind : kRaysKinds) {
-    registerPerPath(raysTask(kind), "bvh", raysCount(kind), [kind](benchmark::State& state) {
-      const RaySet& set = raySet(kind);
-      const MeshBvh& bvh = raysMeshBvh();
-      std::vector<MeshHit> hits(set.rays.size());
-      for (auto _ : state) {
-        bvh.raycast(set.rays, hits);
-        benchmark::DoNotOptimize(hits.data());
-      }
-      reportRays(state, set, hits);
-    });
-  }
+  for (RaysKind kind : kRaysKinds)
+    for (const RaysMethod& m : kRaysMethods) {
+      if (m.coherentOnly && kind != RaysKind::kCoherent) continue;
+      const RayStreamOptions options = m.options;
+      registerPerPath(
+          raysTask(kind), m.name, raysCount(kind),
+          [kind, options](benchmark::State& state) {
+            const RaySet& set = raySet(kind);
+            const MeshBvh& bvh = raysMeshBvh();
+            std::vector<MeshHit> hits(set.rays.size());
+            for (auto _ : state) {
+              bvh.raycast(set.rays, hits, options);
+              benchmark::DoNotOptimize(hits.data());
+            }
+            reportRays(state, set, hits);
+          },
+          /*withReference=*/options.mode == RayStreamOptions::Mode::kSingle);  // no packets there
+    }
   registerOnce("rays/build", "sah", "scalar", kRaysTriangles, [](benchmark::State& state) {
     std::unique_ptr<MeshBvh> bvh;
     for (auto _ : state) {

@@ -1,4 +1,5 @@
-// Rays against a mesh's BVH, one ray at a time (for incoherent rays): the 8 children of a node
+// Rays against a mesh's BVH, one ray at a time (for incoherent rays), and in packets
+// (bvh_packet-inl.hpp, for coherent rays): the 8 children of a node
 // are slab-tested together, the ones hit visited nearest first; a leaf's 8 triangles are tested
 // together with the watertight test (watertight-inl.hpp), the same arithmetic as the scalar
 // intersectTriangle, so every path returns the reference's hits bit for bit.
@@ -163,6 +164,16 @@ void MeshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* 
   }
 }
 
+#include "simd/bvh_packet-inl.hpp"
+
+void MeshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                           std::size_t packets, int width, bool onlyCoherent, MeshHit* out) {
+  if (width == 16)
+    closestHitPackets<16>(mesh, rays, index, packets, onlyCoherent, out);
+  else
+    closestHitPackets<8>(mesh, rays, index, packets, onlyCoherent, out);
+}
+
 void MeshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
   for (std::size_t i = 0; i < rays.count; ++i) {
     const detail::TraversalRay ray = rayAt(rays, i);
@@ -180,12 +191,17 @@ HWY_AFTER_NAMESPACE();
 namespace simdphys::simd {
 HWY_EXPORT(MeshClosestHits);
 HWY_EXPORT(MeshAnyHits);
+HWY_EXPORT(MeshClosestHitPackets);
 
 void meshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
   HWY_DYNAMIC_DISPATCH(MeshClosestHits)(mesh, rays, id, t);
 }
 void meshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
   HWY_DYNAMIC_DISPATCH(MeshAnyHits)(mesh, rays, hit);
+}
+void meshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                           std::size_t packets, int width, bool onlyCoherent, MeshHit* out) {
+  HWY_DYNAMIC_DISPATCH(MeshClosestHitPackets)(mesh, rays, index, packets, width, onlyCoherent, out);
 }
 }  // namespace simdphys::simd
 #endif

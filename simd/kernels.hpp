@@ -257,4 +257,19 @@ struct RaysView {
 void meshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t);
 void meshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit);
 
+// ---- meshes: ray packets (mesh_bvh.hpp, bvh_packet-inl.hpp) -------------------------------------
+}  // namespace simdphys::simd
+namespace simdphys {
+struct MeshHit;  // mesh_bvh.hpp
+}
+namespace simdphys::simd {
+// A packet's lane without a ray (a tile past the image's edge, the stream's tail).
+inline constexpr std::uint32_t kAbsentLane = ~0u;
+// Rays traced in packets of `width` (8 or 16): packet p is the rays index[p * width + i] of `rays`
+// (kAbsentLane: none); each ray's closest hit is written at out[its index], equal to what
+// meshClosestHits answers for it. With onlyCoherent, a packet whose rays do not all point into
+// one octant is traced one ray at a time.
+void meshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                           std::size_t packets, int width, bool onlyCoherent, MeshHit* out);
+
 }  // namespace simdphys::simd

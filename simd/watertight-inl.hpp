@@ -6,23 +6,15 @@
 // on an edge), then t = (sum of weighted depths) / det. Needs <hwy/highway.h>, hn, kernels.hpp
 // and raycast.hpp (differenceOfProducts).
 
-// The lanes whose triangle the ray hits with t in [0, tMax]; their t in `t`. `vertex(q, k)`
-// loads coordinate k of vertex q (a, b, c) of the lanes' triangles.
-template <class D, class VertexRow>
-HWY_INLINE hn::Mask<D> watertightHits(D d, const WatertightQuery& r, float tMax, VertexRow vertex,
-                                      hn::Vec<D>& t) {
+// The hit test once the three vertices are in the ray's sheared frame: px, py (x, y after the
+// shear) and pz (the depth along kz, relative to the origin), one triangle and one ray per lane;
+// sz and tMax per lane. Returns the lanes hit with t in [0, tMax], their t in `t`.
+template <class D>
+HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const hn::Vec<D> (&py)[3],
+                                         const hn::Vec<D> (&pz)[3], hn::Vec<D> sz, hn::Vec<D> tMax,
+                                         hn::Vec<D>& t) {
   constexpr std::size_t kMaxLanes = hn::MaxLanes(D());
-  const float origin[3] = {r.ox, r.oy, r.oz};
-  const auto sx = hn::Set(d, r.sx), sy = hn::Set(d, r.sy), sz = hn::Set(d, r.sz);
   const auto zero = hn::Zero(d);
-  // Per vertex: its coordinates relative to the origin, along kx, ky, kz.
-  auto relative = [&](int q, int k) { return hn::Sub(vertex(q, k), hn::Set(d, origin[k])); };
-  hn::Vec<D> px[3], py[3], pz[3];
-  for (int q = 0; q < 3; ++q) {
-    pz[q] = relative(q, r.kz);
-    px[q] = hn::Sub(relative(q, r.kx), hn::Mul(sx, pz[q]));
-    py[q] = hn::Sub(relative(q, r.ky), hn::Mul(sy, pz[q]));
-  }
   auto edge = [](auto a, auto b, auto c, auto e) { return hn::Sub(hn::Mul(a, b), hn::Mul(c, e)); };
   auto u = edge(px[2], py[1], py[2], px[1]);
   auto w1 = edge(px[0], py[2], py[0], px[2]);  // the scalar's v
@@ -46,5 +38,23 @@ HWY_INLINE hn::Mask<D> watertightHits(D d, const WatertightQuery& r, float tMax,
               hn::Mul(w2, hn::Mul(sz, pz[2])));
   t = hn::Add(hn::Div(scaled, det), zero);  // -0 becomes +0
   const auto hit = hn::AndNot(hn::And(anyNegative, anyPositive), hn::Ne(det, zero));
-  return hn::And(hit, hn::And(hn::Ge(t, zero), hn::Le(t, hn::Set(d, tMax))));
+  return hn::And(hit, hn::And(hn::Ge(t, zero), hn::Le(t, tMax)));
+}
+
+// The lanes whose triangle the ray hits with t in [0, tMax]; their t in `t`. `vertex(q, k)`
+// loads coordinate k of vertex q (a, b, c) of the lanes' triangles.
+template <class D, class VertexRow>
+HWY_INLINE hn::Mask<D> watertightHits(D d, const WatertightQuery& r, float tMax, VertexRow vertex,
+                                      hn::Vec<D>& t) {
+  const float origin[3] = {r.ox, r.oy, r.oz};
+  const auto sx = hn::Set(d, r.sx), sy = hn::Set(d, r.sy);
+  // Per vertex: its coordinates relative to the origin, along kx, ky, kz.
+  auto relative = [&](int q, int k) { return hn::Sub(vertex(q, k), hn::Set(d, origin[k])); };
+  hn::Vec<D> px[3], py[3], pz[3];
+  for (int q = 0; q < 3; ++q) {
+    pz[q] = relative(q, r.kz);
+    px[q] = hn::Sub(relative(q, r.kx), hn::Mul(sx, pz[q]));
+    py[q] = hn::Sub(relative(q, r.ky), hn::Mul(sy, pz[q]));
+  }
+  return watertightSheared(d, px, py, pz, hn::Set(d, r.sz), hn::Set(d, tMax), t);
 }

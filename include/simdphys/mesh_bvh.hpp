@@ -57,6 +57,30 @@ class RayStream : public StreamSet<7> {
   const Stream<float>& tMax() const { return fields_[6]; }
 };
 
+// How MeshBvh::raycast traces a ray stream: one ray at a time, or in packets of 8 or 16 rays that
+// traverse the tree together (for coherent rays: a packet tests each box against all its rays in
+// one SIMD operation, and rays that stay together share the node and triangle loads). A packet
+// whose active rays drop to a few hands them to single-ray traversal, so packets of rays that
+// diverge cost little more than single rays. Every mode returns the same hits, bit for bit.
+struct RayStreamOptions {
+  enum class Mode {
+    // Packets for the groups whose rays all point into the same octant (the signs of the three
+    // direction components agree: a camera's tile does, 16 random directions almost never);
+    // single rays for the other groups.
+    kAuto,
+    kSingle,   // one ray at a time (incoherent rays)
+    kPackets,  // every group as a packet, whatever its directions
+  };
+  Mode mode = Mode::kAuto;
+  // Rays per packet: 8 or 16; 0 picks 16 on AVX-512 paths and 8 elsewhere (a packet of one or
+  // two vectors: docs/bvh.md has the measurements).
+  std::uint32_t packetSize = 0;
+  // 0: a packet is consecutive rays of the stream. Otherwise the stream is an image in scanline
+  // order, imageWidth rays a row, and a packet is a tile of it: 4 x 4 rays (16) or 4 x 2 (8),
+  // cut off at the image's edges. Tiles are more coherent than rows.
+  std::uint32_t imageWidth = 0;
+};
+
 class MeshBvh {
  public:
   static constexpr std::uint32_t kLeafSize = TriangleBlock::kWidth;
@@ -73,8 +97,10 @@ class MeshBvh {
   MeshHit raycast(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
   // Whether any triangle is hit with t in [0, tMax]; stops at the first found.
   bool occluded(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
-  // For every ray of the stream, its closest hit (out.size() == rays.size()).
-  void raycast(const RayStream& rays, std::span<MeshHit> out) const;
+  // For every ray of the stream, its closest hit (out.size() == rays.size()). The reference path
+  // traces one ray at a time whatever the options.
+  void raycast(const RayStream& rays, std::span<MeshHit> out,
+               const RayStreamOptions& options = {}) const;
   // For every ray, whether it hits anything (1) or not (0).
   void occluded(const RayStream& rays, std::span<std::uint8_t> out) const;
 
@@ -95,6 +121,8 @@ class MeshBvh {
 
  private:
   void fillBlocks();
+  void raycastPackets(const RayStream& rays, std::span<MeshHit> out,
+                      const RayStreamOptions& options) const;
   template <class Shape>
   std::vector<std::uint32_t> overlappingShape(const Shape& shape, const Aabb& bounds) const;
 

@@ -12,6 +12,8 @@ class ClosestHits {
  public:
   static constexpr int kMaxTies = 16;
   explicit ClosestHits(float tMax) : tMax_(tMax), bound_(tMax) {}
+  // A ray that hits nothing (tMax = -inf), to be assigned a real one (arrays of rays in packets).
+  ClosestHits() : ClosestHits(-std::numeric_limits<float>::infinity()) {}
 
   float bound() const { return bound_; }
 
@@ -62,9 +64,11 @@ class ClosestHits {
 // whose box the ray enters before `bound` (their references and scaled entry distances, in any
 // order) and returns their number; `core.leaf(reference)` tests a leaf's triangles and returns
 // true to stop (any-hit); `core.bound()` is the current culling distance. A popped entry farther
-// than the bound (which shrinks as hits are found) is skipped unvisited.
+// than the bound (which shrinks as hits are found) is skipped unvisited. `start` is the subtree to
+// walk: the root, or (packet traversal handing a ray over) a node or leaf reference.
 template <class Core>
-inline void traverseRay(const ::simdphys::BvhNode* nodes, std::size_t nodeCount, Core& core) {
+inline void traverseRay(const ::simdphys::BvhNode* nodes, std::size_t nodeCount, Core& core,
+                        std::uint32_t start = 0) {
   using ::simdphys::BvhNode;
   if (nodeCount == 0) return;
   struct Entry {
@@ -73,7 +77,7 @@ inline void traverseRay(const ::simdphys::BvhNode* nodes, std::size_t nodeCount,
   };
   Entry stack[BvhNode::kStackSize + BvhNode::kWidth];
   int top = 0;
-  std::uint32_t ref = 0;  // the root
+  std::uint32_t ref = start;
   for (;;) {
     if (BvhNode::isLeaf(ref)) {
       if (core.leaf(ref)) return;

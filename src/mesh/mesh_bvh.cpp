@@ -188,11 +188,19 @@ bool MeshBvh::occluded(const Ray& ray, float tMax) const {
   return hit != 0;
 }
 
-void MeshBvh::raycast(const RayStream& rays, std::span<MeshHit> out) const {
+void MeshBvh::raycast(const RayStream& rays, std::span<MeshHit> out,
+                      const RayStreamOptions& options) const {
   if (out.size() != rays.size())
     throw Error("MeshBvh::raycast: " + std::to_string(out.size()) + " hits for " +
                 std::to_string(rays.size()) + " rays");
+  if (options.packetSize != 0 && options.packetSize != 8 && options.packetSize != 16)
+    throw Error("MeshBvh::raycast: packetSize " + std::to_string(options.packetSize) +
+                " is not 0, 8 or 16");
   const bool ref = referencePathActive();
+  if (!ref && options.mode != RayStreamOptions::Mode::kSingle) {
+    raycastPackets(rays, out, options);
+    return;
+  }
   const std::int64_t chunks = std::int64_t((rays.size() + kChunk - 1) / kChunk);
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t c = 0; c < chunks; ++c) {
@@ -210,6 +218,49 @@ void MeshBvh::raycast(const RayStream& rays, std::span<MeshHit> out) const {
     float t[kChunk];
     simd::meshClosestHits(meshView(bvh_, blocks_), v, id, t);
     for (std::size_t i = 0; i < v.count; ++i) out[begin + i] = {id[i], t[i]};
+  }
+}
+
+// Groups of rays (rows of the stream or tiles of its image), their lanes' ray indices built per
+// batch of groups, batches spread over the threads like single rays' chunks.
+void MeshBvh::raycastPackets(const RayStream& rays, std::span<MeshHit> out,
+                             const RayStreamOptions& options) const {
+  const std::uint32_t width = options.packetSize != 0
+                                  ? options.packetSize
+                                  : (activePath().rfind("avx512", 0) == 0 ? 16 : 8);
+  const std::size_t n = rays.size();
+  // Tiles: 4 rays wide, width / 4 rows high.
+  const std::size_t imageWidth = options.imageWidth;
+  const std::size_t tilesX = imageWidth ? (imageWidth + 3) / 4 : 0;
+  const std::size_t tileRows = width / 4;
+  const std::size_t imageRows = imageWidth ? (n + imageWidth - 1) / imageWidth : 0;
+  const std::size_t groups =
+      imageWidth ? tilesX * ((imageRows + tileRows - 1) / tileRows) : (n + width - 1) / width;
+  const auto lane = [&](std::size_t g, std::uint32_t i) -> std::uint32_t {
+    std::size_t at;
+    if (imageWidth == 0) {
+      at = g * width + i;
+    } else {
+      const std::size_t x = g % tilesX * 4 + i % 4, y = g / tilesX * tileRows + i / 4;
+      if (x >= imageWidth) return simd::kAbsentLane;
+      at = y * imageWidth + x;
+    }
+    return at < n ? std::uint32_t(at) : simd::kAbsentLane;
+  };
+  simd::RaysView all = chunk(rays, 0);
+  all.count = n;
+  const simd::MeshView mesh = meshView(bvh_, blocks_);
+  const bool onlyCoherent = options.mode == RayStreamOptions::Mode::kAuto;
+  const std::size_t perBatch = kChunk / width;
+  const std::int64_t batches = std::int64_t((groups + perBatch - 1) / perBatch);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t b = 0; b < batches; ++b) {
+    const std::size_t first = std::size_t(b) * perBatch;
+    const std::size_t count = std::min(perBatch, groups - first);
+    std::uint32_t index[kChunk];
+    for (std::size_t g = 0; g < count; ++g)
+      for (std::uint32_t i = 0; i < width; ++i) index[g * width + i] = lane(first + g, i);
+    simd::meshClosestHitPackets(mesh, all, index, count, int(width), onlyCoherent, out.data());
   }
 }
 

@@ -1,0 +1,274 @@
+// Packets of N rays (8 or 16, one or more vectors of lanes) traversing a mesh's BVH together, for
+// coherent rays (Wald, Slusallek, Benthin, Wagner 2001), with Embree's hybrid switch: when few of
+// the packet's rays still enter a subtree, they walk it one at a time. Written once for every
+// width; included in simd/bvh_ray.cpp inside each target's namespace, after RayCore and the sinks
+// (no include guard, by design).
+//
+// Every lane does the single-ray traversal's arithmetic: the same slab test with the same scaled
+// entry and exit (so a box the lone ray would enter is never culled), and the same watertight
+// triangle test, operation for operation, with the lane's own shear. The packet only changes the
+// order in which a ray meets boxes and triangles, and the closest-hit rule (ClosestHits) does not
+// depend on that order: the answers equal the single-ray ones bit for bit.
+
+template <std::size_t N>
+class RayPacket {
+  using D = hn::CappedTag<float, N>;
+  static constexpr std::size_t kLanes = hn::MaxLanes(D());
+  static_assert(N % kLanes == 0 && N <= 16, "whole vectors; active lanes fit 16 bits");
+  // At most this many active rays finish a subtree on their own: a node test across the packet
+  // costs about as much as that many single-ray tests (8 boxes a vector), so packets lose below.
+  // Measured on W2 (docs/bvh.md): N / 4.
+  static constexpr int kSwitchThreshold = int(N / 4);
+
+ public:
+  // Lane i traces ray index[i] of `rays` (kAbsentLane: none).
+  RayPacket(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index)
+      : mesh_(mesh), index_(index) {
+    finite_ = true;
+    for (std::size_t i = 0; i < N; ++i) {
+      const bool present = index[i] != kAbsentLane;
+      // An absent lane's bound is -inf: no box or triangle passes it.
+      ray_[i] =
+          present ? rayAt(rays, index[i])
+                  : detail::traversalRay(0, 0, 0, 1, 1, 1, -std::numeric_limits<float>::infinity());
+      const detail::TraversalRay& r = ray_[i];
+      hits_[i] = Closest(r.tMax);
+      bound_[i] = r.tMax;
+      for (int a = 0; a < 3; ++a) origin_[a][i] = r.origin[a], inverse_[a][i] = r.inverse[a];
+      sx_[i] = r.watertight.sx, sy_[i] = r.watertight.sy, sz_[i] = r.watertight.sz;
+      // The shear's frame: kz, and whether kx and ky are swapped (a negative d[kz]).
+      const int frame = 2 * r.watertight.kz + (r.watertight.kx != (r.watertight.kz + 1) % 3);
+      frame_[i] = float(frame);
+      if (present) frames_ |= 1u << frame, finite_ = finite_ && r.finiteInverse;
+    }
+  }
+
+  // Traces the packet and writes each present ray's closest hit at out[index].
+  void run(MeshHit* out) {
+    if (finite_)
+      trace<true>();
+    else
+      trace<false>();
+    for (std::size_t i = 0; i < N; ++i)
+      if (index_[i] != kAbsentLane) out[index_[i]] = hits_[i].result();
+  }
+
+ private:
+  struct Entry {
+    std::uint32_t ref;
+    float key;      // the smallest entry distance over the lanes: nearest subtrees first
+    float dist[N];  // per lane, the scaled entry distance, +inf where the ray misses the box
+  };
+
+  // kFinite: every ray's inverse direction is finite, so Min/Max bound the slabs (RayCore's rule).
+  template <bool kFinite>
+  void trace() {
+    Entry stack[BvhNode::kStackSize + BvhNode::kWidth];
+    if (mesh_.nodeCount == 0) return;
+    stack[0].ref = 0;
+    stack[0].key = 0;
+    std::fill_n(stack[0].dist, N, 0.0f);
+    int top = 1;
+    alignas(64) float dist[N];
+    while (top > 0) {
+      const Entry& e = stack[--top];
+      const std::uint32_t ref = e.ref;
+      std::copy_n(e.dist, N, dist);  // the slot is reused by the children
+      const std::uint32_t active = activeLanes(dist);
+      if (active == 0) continue;
+      if (__builtin_popcount(active) <= kSwitchThreshold) {
+        for (std::uint32_t m = active; m != 0; m &= m - 1) single(__builtin_ctz(m), ref);
+      } else if (BvhNode::isLeaf(ref)) {
+        leaf(ref, dist);
+      } else {
+        top = expand<kFinite>(mesh_.nodes[ref], dist, stack, top);
+      }
+    }
+  }
+
+  // The lanes whose ray enters the subtree before its bound, as bits.
+  std::uint32_t activeLanes(const float* dist) const {
+    const D d;
+    std::uint32_t bits = 0;
+    for (std::size_t h = 0; h < N; h += kLanes) {
+      std::uint8_t b[8] = {};
+      hn::StoreMaskBits(d, hn::Le(hn::LoadU(d, dist + h), hn::Load(d, bound_ + h)), b);
+      bits |= (std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8) << h;
+    }
+    return bits;
+  }
+
+  // Lane i walks the subtree alone, with its own closest-hit state.
+  void single(int i, std::uint32_t ref) {
+    if (ray_[i].finiteInverse) {
+      RayCore<Closest, true> core(mesh_, ray_[i], hits_[i]);
+      traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
+    } else {
+      RayCore<Closest, false> core(mesh_, ray_[i], hits_[i]);
+      traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
+    }
+    bound_[i] = hits_[i].bound();
+  }
+
+  // Each child box against the packet's active rays (rays in lanes, one box broadcast); the
+  // children some ray enters go on the stack, farthest first. Returns the new top.
+  template <bool kFinite>
+  int expand(const BvhNode& n, const float* dist, Entry* stack, int top) const {
+    const D d;
+    const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
+    const auto zero = hn::Zero(d);
+    Entry kids[BvhNode::kWidth];
+    int count = 0;
+    const float* lo[3] = {n.minX, n.minY, n.minZ};
+    const float* hi[3] = {n.maxX, n.maxY, n.maxZ};
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      if (n.child[k] == BvhNode::kEmpty) continue;
+      Entry& kid = kids[count];
+      bool any = false;
+      auto key = inf;
+      for (std::size_t h = 0; h < N; h += kLanes) {
+        const auto bound = hn::Load(d, bound_ + h);
+        const auto active = hn::Le(hn::LoadU(d, dist + h), bound);
+        auto enter = zero, exit = bound;
+        for (int a = 0; a < 3; ++a) {
+          const auto o = hn::Load(d, origin_[a] + h), inv = hn::Load(d, inverse_[a] + h);
+          // The near face by the sign bit of the direction (that of its inverse, -0 giving
+          // -inf), per lane, as RayCore picks it per ray.
+          const auto negative = hn::Lt(inv, zero);
+          const auto boxLo = hn::Set(d, lo[a][k]), boxHi = hn::Set(d, hi[a][k]);
+          const auto tNear = hn::Mul(hn::Sub(hn::IfThenElse(negative, boxHi, boxLo), o), inv);
+          const auto tFar = hn::Mul(hn::Sub(hn::IfThenElse(negative, boxLo, boxHi), o), inv);
+          if constexpr (kFinite) {
+            enter = hn::Max(tNear, enter);
+            exit = hn::Min(tFar, exit);
+          } else {  // comparisons: a NaN must leave the bound as it is
+            enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
+            exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
+          }
+        }
+        enter = hn::Mul(enter, hn::Set(d, detail::kEnterScale));
+        const auto hit =
+            hn::And(active, hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale))));
+        const auto kept = hn::IfThenElse(hit, enter, inf);
+        hn::StoreU(kept, d, kid.dist + h);
+        if (hn::AllFalse(d, hit)) continue;
+        any = true;
+        key = hn::Min(key, hn::MinOfLanes(d, kept));
+      }
+      if (!any) continue;
+      kid.ref = n.child[k];
+      kid.key = hn::GetLane(key);
+      prefetch(kid.ref);
+      ++count;
+    }
+    // Insertion sort by key onto the stack, farthest first: the nearest is popped next.
+    const int base = top;
+    for (int c = 0; c < count; ++c) {
+      int j = top++;
+      while (j > base && stack[j - 1].key < kids[c].key) stack[j] = stack[j - 1], --j;
+      stack[j] = kids[c];
+    }
+    return top;
+  }
+
+  // The leaf's triangles against the active rays, one triangle broadcast across the rays. The
+  // shear's axes differ between rays of different dominant axes, so rays are taken a frame at a
+  // time (coherent packets have one): each lane then runs the scalar test's operations.
+  void leaf(std::uint32_t ref, const float* dist) {
+    const D d;
+    const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
+    const std::uint32_t count = BvhNode::leafCount(ref);
+    for (std::uint32_t frames = frames_; frames != 0; frames &= frames - 1) {
+      const int frame = __builtin_ctz(frames);
+      const int kz = frame / 2;
+      int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+      if (frame & 1) std::swap(kx, ky);
+      for (std::uint32_t l = 0; l < count; ++l) {
+        for (std::size_t h = 0; h < N; h += kLanes) {
+          const auto bound = hn::Load(d, bound_ + h);
+          const auto lanes = hn::And(hn::Le(hn::LoadU(d, dist + h), bound),
+                                     hn::Eq(hn::Load(d, frame_ + h), hn::Set(d, float(frame))));
+          if (hn::AllFalse(d, lanes)) continue;
+          const auto sx = hn::Load(d, sx_ + h), sy = hn::Load(d, sy_ + h);
+          auto relative = [&](int q, int k) {
+            return hn::Sub(hn::Set(d, block.v[q][k][l]), hn::Load(d, origin_[k] + h));
+          };
+          hn::Vec<D> px[3], py[3], pz[3];
+          for (int q = 0; q < 3; ++q) {
+            pz[q] = relative(q, kz);
+            px[q] = hn::Sub(relative(q, kx), hn::Mul(sx, pz[q]));
+            py[q] = hn::Sub(relative(q, ky), hn::Mul(sy, pz[q]));
+          }
+          hn::Vec<D> t;
+          const auto hit =
+              hn::And(lanes, watertightSheared(d, px, py, pz, hn::Load(d, sz_ + h), bound, t));
+          if (hn::AllFalse(d, hit)) continue;
+          alignas(64) float ts[kLanes];
+          hn::Store(t, d, ts);
+          std::uint8_t bits[8] = {};
+          hn::StoreMaskBits(d, hit, bits);
+          for (unsigned m = unsigned(bits[0]) | unsigned(bits[1]) << 8; m != 0; m &= m - 1) {
+            const std::size_t i = h + std::size_t(__builtin_ctz(m));
+            hits_[i].offer(ts[i - h], block.id[l]);
+            bound_[i] = hits_[i].bound();
+          }
+        }
+      }
+    }
+  }
+
+  void prefetch(std::uint32_t ref) const {
+    if (BvhNode::isLeaf(ref))
+      hwy::Prefetch(mesh_.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
+    else
+      hwy::Prefetch(mesh_.nodes + ref);
+  }
+
+  const MeshView& mesh_;
+  const std::uint32_t* index_;
+  // Per lane: the ray as the single-ray traversal takes it, its closest-hit state, and SoA copies
+  // of what the packet tests read.
+  detail::TraversalRay ray_[N];
+  Closest hits_[N];
+  alignas(64) float bound_[N];
+  alignas(64) float origin_[3][N];
+  alignas(64) float inverse_[3][N];
+  alignas(64) float sx_[N], sy_[N], sz_[N];
+  alignas(64) float frame_[N];  // 2 kz + (kx, ky swapped), as a float for a float compare
+  std::uint32_t frames_ = 0;    // the frames present, as bits
+  bool finite_ = true;
+};
+
+// Whether the rays present all point into one octant (the sign bits of their directions agree):
+// RayStreamOptions::Mode::kAuto's coherence test.
+inline bool sameOctant(const RaysView& rays, const std::uint32_t* index, std::size_t n) {
+  int octant = -1;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (index[i] == kAbsentLane) continue;
+    int o = 0;
+    for (int a = 0; a < 3; ++a) o |= int(std::signbit(rays.direction[a][index[i]])) << a;
+    if (octant >= 0 && o != octant) return false;
+    octant = o;
+  }
+  return true;
+}
+
+// Packets of N; with onlyCoherent, a packet whose rays fail sameOctant is traced ray by ray.
+template <std::size_t N>
+void closestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                       std::size_t packets, bool onlyCoherent, MeshHit* out) {
+  for (std::size_t p = 0; p < packets; ++p) {
+    const std::uint32_t* lanes = index + p * N;
+    if (!onlyCoherent || sameOctant(rays, lanes, N)) {
+      RayPacket<N>(mesh, rays, lanes).run(out);
+      continue;
+    }
+    for (std::size_t i = 0; i < N; ++i) {
+      if (lanes[i] == kAbsentLane) continue;
+      const detail::TraversalRay ray = rayAt(rays, lanes[i]);
+      Closest closest(ray.tMax);
+      traverse(mesh, ray, closest);
+      out[lanes[i]] = closest.result();
+    }
+  }
+}
