@@ -15,6 +15,7 @@ void registerBandwidthBenchmarks();
 void registerGeometry3dBenchmarks();
 void registerSceneBenchmarks();
 void registerOverlap3dBenchmarks();
+void registerGeometry2dBenchmarks();
 }  // namespace simdphys::bench
 
 namespace {
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   bench::registerGeometry3dBenchmarks();
   bench::registerSceneBenchmarks();
   bench::registerOverlap3dBenchmarks();
+  bench::registerGeometry2dBenchmarks();
 #ifdef SIMDPHYS_HAVE_BULLET
   bench::registerBulletBenchmarks();
 #endif
