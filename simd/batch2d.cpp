@@ -21,14 +21,25 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // Runs `test(at, all)` over a stream: `at(field)` is the field of the current elements, `all(x)`
 // a query value beside them. Vectors up to `padded` (padding lanes fail every test), or floats up
-// to `count` in a plain loop that stores each index and advances past the ones that pass.
+// to `count` in plain loops: a block of answers (a loop the compiler can vectorise; this file is
+// compiled with -fno-math-errno so that std::sqrt does not stop it), then the indices of the ones
+// that pass.
 template <class Test>
 std::size_t run(Loop loop, std::size_t count, std::size_t padded, std::uint32_t* out, Test test) {
   if (loop == Loop::kAutovec) {
+    constexpr std::size_t kBlock = 256;
     std::size_t n = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-      out[n] = std::uint32_t(i);
-      n += test([i](const float* field) { return field[i]; }, [](float x) { return x; });
+    for (std::size_t start = 0; start < count; start += kBlock) {
+      const std::size_t m = std::min(kBlock, count - start);
+      bool keep[kBlock];
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t i = start + k;
+        keep[k] = test([i](const float* field) { return field[i]; }, [](float x) { return x; });
+      }
+      for (std::size_t k = 0; k < m; ++k) {
+        out[n] = std::uint32_t(start + k);
+        n += keep[k];
+      }
     }
     return n;
   }
