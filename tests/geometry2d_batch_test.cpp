@@ -392,6 +392,7 @@ struct RectSet {
 std::vector<RectSet> rectSets() {
   std::vector<RectSet> sets;
   sets.push_back({"random", randomRects(70, 2000, 60)});
+  sets.push_back({"few", randomRects(74, 150, 15)});  // below kBruteBelow: kAuto's brute force
   sets.push_back({"random_at_1e5", randomRects(71, 1500, 20, Vec2f(1e5f, -1e5f))});
   // Unit squares on a unit lattice: every neighbour only touches (shared edges and corners), and
   // many minX are equal (ties in the sort).
@@ -443,8 +444,9 @@ TEST_P(Broadphase2d, EveryMethodEqualsBruteForce) {
   std::vector<Pair> pairs;
   for (const RectSet& set : rectSets()) {
     const std::vector<Pair> want = bruteForcePairs(set.rects);
-    for (PairMethod2d method : {PairMethod2d::kBandedSweep, PairMethod2d::kSweep,
-                                PairMethod2d::kBrute, PairMethod2d::kQuadtree}) {
+    for (PairMethod2d method :
+         {PairMethod2d::kAuto, PairMethod2d::kBandedSweep, PairMethod2d::kSweep,
+          PairMethod2d::kBrute, PairMethod2d::kQuadtree}) {
       finder.find(set.rects, pairs, method);
       EXPECT_EQ(pairs, want) << set.name << ", method " << int(method);
     }

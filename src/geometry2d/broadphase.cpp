@@ -159,8 +159,16 @@ PairFinder2d::~PairFinder2d() = default;
 PairFinder2d::PairFinder2d(PairFinder2d&&) noexcept = default;
 PairFinder2d& PairFinder2d::operator=(PairFinder2d&&) noexcept = default;
 
+namespace {
+// kAuto's choice for this many rectangles; other methods as asked.
+PairMethod2d resolved(PairMethod2d method, const RectStream& r) {
+  if (method != PairMethod2d::kAuto) return method;
+  return r.size() < kBruteBelow ? PairMethod2d::kBrute : PairMethod2d::kBandedSweep;
+}
+}  // namespace
+
 void PairFinder2d::find(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method) {
-  switch (method) {
+  switch (resolved(method, r)) {
     case PairMethod2d::kQuadtree:
       return quadtreePairs(r, pairs);
     case PairMethod2d::kBrute:
@@ -186,6 +194,7 @@ void findPairs(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d metho
 
 void detail::findPairs2dAutovec(PairFinder2d& finder, const RectStream& r, std::vector<Pair>& pairs,
                                 PairMethod2d method) {
+  method = resolved(method, r);
   if (method == PairMethod2d::kBrute) {
     pairs.clear();
     return simd::bruteRects2d(view(r), pairs, simd::Loop::kAutovec);
