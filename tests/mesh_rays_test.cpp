@@ -125,28 +125,48 @@ TEST_P(MeshRays, RaysAtSharedVerticesAndEdgesNeverMiss) {
 
 // W2 at full size (G = 513) on this path: the figures of WORKLOADS.md, and every ray against the
 // double-precision grid walk (every 7th ray, to keep the test short).
+// W2's inputs, tree and double-precision reference hits (of every 7th ray) depend on no path:
+// built once for all paths.
+struct W2Set {
+  RayStream rays;
+  scenes::RaysReference figures;
+  std::vector<std::size_t> sampled;  // indices of the sampled rays
+  std::vector<scenes::ReferenceHit> reference;
+};
+struct W2 {
+  Mesh mesh = scenes::makeHeightfield();
+  MeshBvh bvh{mesh};
+  std::vector<W2Set> sets;
+};
+const W2& w2() {
+  static const W2 w = [] {
+    W2 out;
+    for (auto [rays, figures] :
+         {std::pair{scenes::makeCoherentRays(), scenes::kCoherentReference},
+          std::pair{scenes::makeIncoherentRays(), scenes::kIncoherentReference}}) {
+      W2Set set{std::move(rays), figures, {}, {}};
+      RayStream sample;
+      for (std::size_t i = 0; i < set.rays.size(); i += 7)
+        sample.push(set.rays[i]), set.sampled.push_back(i);
+      set.reference = scenes::referenceHits(out.mesh, scenes::kRaysGrid, sample);
+      out.sets.push_back(std::move(set));
+    }
+    return out;
+  }();
+  return w;
+}
+
 TEST_P(MeshRays, W2FiguresAndDoubleReference) {
-  const Mesh mesh = scenes::makeHeightfield();
-  const MeshBvh bvh(mesh);
-  struct Set {
-    RayStream rays;
-    scenes::RaysReference figures;
-  };
-  const Set sets[] = {{scenes::makeCoherentRays(), scenes::kCoherentReference},
-                      {scenes::makeIncoherentRays(), scenes::kIncoherentReference}};
-  for (const Set& s : sets) {
+  for (const W2Set& s : w2().sets) {
     std::vector<MeshHit> hits(s.rays.size());
-    bvh.raycast(s.rays, hits);
+    w2().bvh.raycast(s.rays, hits);
     const scenes::RaysReference found = scenes::summarise(hits);
     EXPECT_EQ(found.hits, s.figures.hits);
     // The figure has 8 significant digits.
     EXPECT_NEAR(found.sumT, s.figures.sumT, scenes::kSumTTolerance * s.figures.sumT);
-    RayStream sample;
     std::vector<MeshHit> sampleHits;
-    for (std::size_t i = 0; i < s.rays.size(); i += 7)
-      sample.push(s.rays[i]), sampleHits.push_back(hits[i]);
-    const auto reference = scenes::referenceHits(mesh, scenes::kRaysGrid, sample);
-    const auto c = scenes::compareWithReference(sampleHits, reference);
+    for (std::size_t i : s.sampled) sampleHits.push_back(hits[i]);
+    const auto c = scenes::compareWithReference(sampleHits, s.reference);
     // W2: rays may differ from the double reference only where its hit is within 1e-5 of an edge.
     EXPECT_EQ(c.differ, 0u);
     // Same triangle: t within a few float roundings of the double t (float's eps is 1.2e-7; the
