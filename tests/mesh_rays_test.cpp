@@ -126,7 +126,7 @@ TEST_P(MeshRays, RaysAtSharedVerticesAndEdgesNeverMiss) {
 // W2 at full size (G = 513) on this path: the figures of WORKLOADS.md, and every ray against the
 // double-precision grid walk (every 7th ray, to keep the test short).
 // W2's inputs, tree and double-precision reference hits (of every 7th ray) depend on no path:
-// built once for all paths.
+// built once per process (ctest runs each path's case in its own).
 struct W2Set {
   RayStream rays;
   scenes::RaysReference figures;
