@@ -126,18 +126,6 @@ class RayCore {
   int near_[3], far_[3];
 };
 
-// The two sinks: the closest hit, and any hit (which stops at the first).
-struct Closest : ClosestHits {
-  using ClosestHits::ClosestHits;
-  static constexpr bool kAnyHit = false;
-};
-struct Any {
-  static constexpr bool kAnyHit = true;
-  float tMax;
-  bool found = false;
-  float bound() const { return tMax; }
-};
-
 detail::TraversalRay rayAt(const RaysView& r, std::size_t i) {
   return detail::traversalRay(r.origin[0][i], r.origin[1][i], r.origin[2][i], r.direction[0][i],
                               r.direction[1][i], r.direction[2][i], r.tMax[i]);

@@ -60,6 +60,18 @@ class ClosestHits {
   Tie ties_[kMaxTies];
 };
 
+// The two sinks of a traversal: the closest hit, and any hit (which stops at the first).
+struct Closest : ClosestHits {
+  using ClosestHits::ClosestHits;
+  static constexpr bool kAnyHit = false;
+};
+struct Any {
+  static constexpr bool kAnyHit = true;
+  float tMax;
+  bool found = false;
+  float bound() const { return tMax; }
+};
+
 // Depth-first, nearest child first. `core.expand(node, bound, refs, dists)` writes the children
 // whose box the ray enters before `bound` (their references and scaled entry distances, in any
 // order) and returns their number; `core.leaf(reference)` tests a leaf's triangles and returns

@@ -1,17 +1,8 @@
 #include "simdphys/geometry2d/streams.hpp"
 
 namespace simdphys {
-namespace {
-
-std::string at(std::string_view where, std::size_t i) {
-  return std::string(where) + ": element " + std::to_string(i);
-}
-
-void requireIndex(std::size_t i, std::size_t size, std::string_view where) {
-  if (i >= size) throw Error(at(where, i) + " is out of range (size " + std::to_string(size) + ")");
-}
-
-}  // namespace
+using detail::at;
+using detail::requireIndex;
 
 void CircleStream::push(const Circle& c) {
   validate(c, at("CircleStream::push", size()));

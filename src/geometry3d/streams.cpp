@@ -3,17 +3,8 @@
 #include "simdphys/geometry3d/raycast.hpp"
 
 namespace simdphys {
-namespace {
-
-std::string at(std::string_view where, std::size_t i) {
-  return std::string(where) + ": element " + std::to_string(i);
-}
-
-void requireIndex(std::size_t i, std::size_t size, std::string_view where) {
-  if (i >= size) throw Error(at(where, i) + " is out of range (size " + std::to_string(size) + ")");
-}
-
-}  // namespace
+using detail::at;
+using detail::requireIndex;
 
 void BoxStream::push(const Aabb& b) {
   validate(b, at("BoxStream::push", size()));

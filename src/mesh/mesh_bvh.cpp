@@ -72,17 +72,6 @@ class RayCore {
   Sink& sink_;
 };
 
-struct Closest : ClosestHits {
-  using ClosestHits::ClosestHits;
-  static constexpr bool kAnyHit = false;
-};
-struct Any {
-  static constexpr bool kAnyHit = true;
-  float tMax;
-  bool found = false;
-  float bound() const { return tMax; }
-};
-
 MeshHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
                    const detail::TraversalRay& ray) {
   Closest closest(ray.tMax);

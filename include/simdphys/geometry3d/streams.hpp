@@ -5,11 +5,23 @@
 
 #include <array>
 #include <limits>
+#include <string>
+#include <string_view>
 
 #include "simdphys/core.hpp"
 #include "simdphys/geometry3d/primitives.hpp"
 
 namespace simdphys {
+
+namespace detail {
+// The streams' error messages: "where: element i", and an index check naming it.
+inline std::string at(std::string_view where, std::size_t i) {
+  return std::string(where) + ": element " + std::to_string(i);
+}
+inline void requireIndex(std::size_t i, std::size_t size, std::string_view where) {
+  if (i >= size) throw Error(at(where, i) + " is out of range (size " + std::to_string(size) + ")");
+}
+}  // namespace detail
 
 // N float fields of one length, each with its own padding value: what every stream is made of.
 template <std::size_t N>
