@@ -45,7 +45,7 @@ void registerQueries(std::size_t n) {
         checkExact(state, count, aabbReference(n).queryOverlaps);
       },
       false);
-  registerOnce("aabb_build", "sah", "scalar", n, [n](benchmark::State& state) {
+  registerBestPath("aabb_build", "sah", n, [n](benchmark::State& state) {
     const auto& w = aabbWorkload(n);
     Bvh tree;
     for (auto _ : state) {

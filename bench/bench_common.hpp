@@ -36,7 +36,7 @@ void registerPerPath(const std::string& task, const std::string& method, std::si
 void registerBestPath(const std::string& task, const std::string& method, std::size_t n,
                       const Body& body);
 // Registers `body` once, under task/method/label/n: label is "peer" for another engine's run, or
-// "scalar" for code that has one path only (a tree build).
+// "scalar" for code that has one path only (the octree's build).
 void registerOnce(const std::string& task, const std::string& method, const std::string& label,
                   std::size_t n, const Body& body);
 

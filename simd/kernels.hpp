@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -14,7 +15,23 @@
 
 namespace simdphys {
 struct BvhNode;  // bvh.hpp: plain arrays, no Eigen
-}
+
+namespace detail {
+// A primitive as the BVH builder moves it (32 bytes): its box as two rows, the id in the first
+// row's unused lane. The builder partitions these in place, so every pass over a range reads
+// memory in order (Embree's PrimRef).
+struct alignas(32) BvhPrimRef {
+  float lo[4], hi[4];  // lo[3]: the id's bits; hi[3]: 0
+
+  BvhPrimRef() = default;
+  BvhPrimRef(const float (&l)[3], const float (&h)[3], std::uint32_t id)
+      : lo{l[0], l[1], l[2], std::bit_cast<float>(id)}, hi{h[0], h[1], h[2], 0} {}
+  std::uint32_t id() const { return std::bit_cast<std::uint32_t>(lo[3]); }
+  // Twice the centre: only the ordering matters, and halving would round.
+  float centroid(int a) const { return lo[a] + hi[a]; }
+};
+}  // namespace detail
+}  // namespace simdphys
 
 namespace simdphys::simd {
 
@@ -71,6 +88,37 @@ std::uint64_t bvhCountOverlaps(const BvhNode* nodes, std::size_t nodeCount, cons
                                std::size_t nQueries);
 void bvhQuery(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
               std::vector<std::uint32_t>& out);
+
+// ---- BVH build (src/bvh/build.cpp) ------------------------------------------------------------
+// Binned SAH: the three kernels of the builder's passes over a range of primitives. Boxes are rows
+// (x, y, z, -) so one 4-lane operation grows all three axes; the fourth lane is ignored.
+struct alignas(16) BvhBox {
+  float lo[4], hi[4];
+};
+inline constexpr int kBvhBins = 16;
+// The bins of a range: on axis a, a primitive goes to bin
+// clamp(int((centroid(a) - origin[a]) * scale[a]), 0, kBvhBins - 1), a scale of 0 putting all in
+// bin 0.
+struct BvhBinFrame {
+  float origin[3], scale[3];
+};
+struct BvhBins {
+  BvhBox box[3][kBvhBins];
+  std::uint32_t count[3][kBvhBins];
+};
+// Both sides of a split: their boxes and the boxes of their centroids, and the left's size.
+struct BvhSides {
+  BvhBox box[2], centroids[2];
+  std::size_t left;
+};
+void bvhBin(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame,
+            BvhBins& bins);
+// Moves the primitives whose bin on `axis` is below `split` before the others (Hoare's scheme,
+// in place) and measures both sides on the way.
+void bvhPartition(detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame, int axis,
+                  int split, BvhSides& sides);
+// The box and centroid box of the primitives.
+void bvhBounds(const detail::BvhPrimRef* prims, std::size_t n, BvhBox& box, BvhBox& centroids);
 
 // ---- W1: broadphase pairs -------------------------------------------------------------------
 // One cell of the sweep grid: its boxes sorted by minX, each with its id and the first grid row

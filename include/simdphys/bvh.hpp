@@ -56,7 +56,7 @@ struct BvhBuildOptions {
 };
 
 namespace detail {
-struct BvhPrimRef;  // build.cpp: a primitive's box and id as the builder moves it
+struct BvhPrimRef;  // simd/kernels.hpp: a primitive's box and id as the builder moves it
 }
 
 class Bvh {
@@ -97,12 +97,12 @@ class Bvh {
   int depth() const { return depth_; }
 
  private:
-  void buildFrom(std::vector<detail::BvhPrimRef> prims, const BvhBuildOptions& options,
+  void buildFrom(AlignedVector<detail::BvhPrimRef> prims, const BvhBuildOptions& options,
                  const char* where);
   void requireBoxTree(const char* where) const;
 
-  std::vector<BvhNode> nodes_;
-  std::vector<std::uint32_t> order_;
+  AlignedVector<BvhNode> nodes_;
+  AlignedVector<std::uint32_t> order_;
   BvhBuildOptions options_;
   std::size_t primitives_ = 0;
   int depth_ = 0;

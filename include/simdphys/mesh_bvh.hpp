@@ -128,7 +128,7 @@ class MeshBvh {
 
   Mesh mesh_;
   Bvh bvh_;
-  std::vector<TriangleBlock> blocks_;
+  AlignedVector<TriangleBlock> blocks_;
   float extent_ = 0;  // twice the largest |coordinate|: the overlap queries' tolerance scale
 };
 

@@ -6,27 +6,17 @@
 
 #include <omp.h>
 
+#include "simd/kernels.hpp"
 #include "simdphys/bvh.hpp"
 
 namespace simdphys {
-
-// A primitive as the builder moves it: its box and id in 32 bytes, partitioned in place, so
-// every pass over a range reads memory in order (Embree's PrimRef).
-struct detail::BvhPrimRef {
-  std::array<float, 3> lo;
-  std::uint32_t id;
-  std::array<float, 3> hi;
-  float pad;
-  // Twice the centre: only the ordering matters, and halving would round.
-  float centroid(int a) const { return lo[a] + hi[a]; }
-};
-
 namespace {
 using PrimRef = detail::BvhPrimRef;
+using simd::BvhBox;
 static_assert(sizeof(PrimRef) == 32);
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr int kBins = 16;
+constexpr int kBins = simd::kBvhBins;
 // Below this many binary splits from the root, SAH is trusted; deeper, the build switches to
 // median splits, which bound the depth (and so the traversal stack) on adversarial inputs.
 constexpr int kMaxSahDepth = 40;
@@ -35,12 +25,14 @@ constexpr std::uint32_t kSmallRange = 16;
 // Subtrees above this many primitives are built as parallel tasks.
 constexpr std::uint32_t kParallelGrain = 8192;
 
-struct Bounds {
-  std::array<float, 3> lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
-  void grow(const Bounds& b) {
+// A box in the kernels' rows (x, y, z, -); the default is empty.
+struct Bounds : BvhBox {
+  Bounds() : BvhBox{{kInf, kInf, kInf, kInf}, {-kInf, -kInf, -kInf, -kInf}} {}
+  explicit Bounds(const BvhBox& b) : BvhBox(b) {}
+  void grow(const BvhBox& b) {
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], b.lo[a]), hi[a] = std::max(hi[a], b.hi[a]);
   }
-  void grow(const std::array<float, 3>& p) {
+  void grow(const float* p) {
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
   }
   float halfArea() const {
@@ -59,19 +51,21 @@ struct Range {
 
 class Builder {
  public:
-  Builder(std::vector<PrimRef> prims, const BvhBuildOptions& options, std::vector<BvhNode>& nodes)
+  Builder(AlignedVector<PrimRef> prims, const BvhBuildOptions& options,
+          AlignedVector<BvhNode>& nodes)
       : nodes_(nodes), prims_(std::move(prims)), options_(options) {}
 
   // The primitive ids in leaf order (leaves reference ranges of it).
-  std::vector<std::uint32_t> order() const {
-    std::vector<std::uint32_t> ids(prims_.size());
-    for (std::size_t i = 0; i < prims_.size(); ++i) ids[i] = prims_[i].id;
+  AlignedVector<std::uint32_t> order() const {
+    AlignedVector<std::uint32_t> ids;
+    ids.reserve(prims_.size());
+    for (const PrimRef& p : prims_) ids.push_back(p.id());
     return ids;
   }
 
   int build() {
     Range all{0, std::uint32_t(prims_.size()), {}, {}, 0};
-    for (const PrimRef& p : prims_) grow(all, p);
+    simd::bvhBounds(prims_.data(), prims_.size(), all.box, all.cbox);
     int depth = 0;
 #pragma omp parallel
 #pragma omp single
@@ -85,19 +79,11 @@ class Builder {
   }
 
  private:
-  static void grow(Range& r, const PrimRef& p) {
-    for (int a = 0; a < 3; ++a) {
-      r.box.lo[a] = std::min(r.box.lo[a], p.lo[a]), r.box.hi[a] = std::max(r.box.hi[a], p.hi[a]);
-      float c = p.centroid(a);
-      r.cbox.lo[a] = std::min(r.cbox.lo[a], c), r.cbox.hi[a] = std::max(r.cbox.hi[a], c);
-    }
-  }
-
   // Builds the subtree of `range` at the end of `out`, children after their parent, depth first;
   // returns its depth in nodes. Large child ranges are built as OpenMP tasks, each into a list of
   // its own, then appended in slot order with their node indices moved: the tree is the same,
   // node for node, whatever the number of threads.
-  int buildNode(const Range& range, std::vector<BvhNode>& out) {
+  int buildNode(const Range& range, AlignedVector<BvhNode>& out) {
     const std::uint32_t index = std::uint32_t(out.size());
     out.emplace_back();
     std::array<Range, BvhNode::kWidth> kids;
@@ -128,7 +114,7 @@ class Builder {
       kids[best] = left;
       kids[used++] = right;
     }
-    std::array<std::vector<BvhNode>, BvhNode::kWidth> subtrees;
+    std::array<AlignedVector<BvhNode>, BvhNode::kWidth> subtrees;
     std::array<int, BvhNode::kWidth> depths{};
     auto asTask = [&](int k) { return parallel_ && kids[k].count() > kParallelGrain; };
     for (int k = 0; k < used; ++k) {
@@ -149,7 +135,7 @@ class Builder {
         // A box tree's one-primitive leaf names the primitive; others reference a range of the
         // order, renumbered by Bvh::build once the leaves are aligned.
         const std::uint32_t first =
-            options_.maxLeafSize == 1 ? prims_[kids[k].begin].id : kids[k].begin;
+            options_.maxLeafSize == 1 ? prims_[kids[k].begin].id() : kids[k].begin;
         node.child[k] = BvhNode::kLeaf | (kids[k].count() - 1) << BvhNode::kCountShift | first;
         continue;
       }
@@ -167,7 +153,7 @@ class Builder {
   }
 
   // Appends a subtree built on its own, moving its child node indices to where it lands.
-  static void append(const std::vector<BvhNode>& subtree, std::vector<BvhNode>& out) {
+  static void append(const AlignedVector<BvhNode>& subtree, AlignedVector<BvhNode>& out) {
     const std::uint32_t offset = std::uint32_t(out.size());
     for (BvhNode node : subtree) {
       for (std::uint32_t& c : node.child)
@@ -192,53 +178,42 @@ class Builder {
 
   // Binned SAH over the three axes: one pass fills the bins, a second partitions the range.
   std::optional<std::pair<Range, Range>> sahSplit(const Range& r) {
-    struct Bin {
-      Bounds box;
-      std::uint32_t count = 0;
-    };
-    std::array<float, 3> scale{};
+    simd::BvhBinFrame frame{};
     for (int a = 0; a < 3; ++a) {
-      float extent = r.cbox.hi[a] - r.cbox.lo[a];
-      if (extent > 0) scale[a] = kBins * (1 - 1e-6f) / extent;
+      const float extent = r.cbox.hi[a] - r.cbox.lo[a];
+      const float scale = kBins * (1 - 1e-6f) / extent;
+      frame.origin[a] = r.cbox.lo[a];
+      // A denormal extent would give an infinite scale, and 0 * inf a NaN: not split on.
+      frame.scale[a] = extent > 0 && scale < kInf ? scale : 0;
     }
-    std::array<std::array<Bin, kBins>, 3> bins;
-    for (std::uint32_t i = r.begin; i < r.end; ++i) {
-      const PrimRef& p = prims_[i];
-      for (int a = 0; a < 3; ++a) {
-        Bin& bin = bins[a][binOf(p.centroid(a), r.cbox.lo[a], scale[a])];
-        for (int e = 0; e < 3; ++e)
-          bin.box.lo[e] = std::min(bin.box.lo[e], p.lo[e]),
-          bin.box.hi[e] = std::max(bin.box.hi[e], p.hi[e]);
-        ++bin.count;
-      }
-    }
+    simd::BvhBins bins;
+    simd::bvhBin(prims_.data() + r.begin, r.count(), frame, bins);
     float bestCost = kInf;
     int bestAxis = -1, bestBin = 0;
     for (int a = 0; a < 3; ++a) {
-      if (scale[a] == 0) continue;
+      if (frame.scale[a] == 0) continue;
       // Right-to-left sweep stores the right cost of every split; left-to-right finds the best.
       std::array<float, kBins> rightCost{};
       Bounds acc;
       std::uint32_t n = 0;
       for (int k = kBins - 1; k > 0; --k) {
-        acc.grow(bins[a][k].box);
-        n += bins[a][k].count;
+        acc.grow(bins.box[a][k]);
+        n += bins.count[a][k];
         rightCost[k] = n ? acc.halfArea() * float(n) : kInf;
       }
       acc = {};
       n = 0;
       for (int k = 1; k < kBins; ++k) {
-        acc.grow(bins[a][k - 1].box);
-        n += bins[a][k - 1].count;
+        acc.grow(bins.box[a][k - 1]);
+        n += bins.count[a][k - 1];
         float cost = n ? acc.halfArea() * float(n) + rightCost[k] : kInf;
         if (cost < bestCost) bestCost = cost, bestAxis = a, bestBin = k;
       }
     }
     if (bestAxis < 0) return std::nullopt;
-    const int a = bestAxis;
-    return partition(r, [&](const PrimRef& p) {
-      return binOf(p.centroid(a), r.cbox.lo[a], scale[a]) < bestBin;
-    });
+    simd::BvhSides sides;
+    simd::bvhPartition(prims_.data() + r.begin, r.count(), frame, bestAxis, bestBin, sides);
+    return sidesOf(r, sides);
   }
 
   // Halves the range at the median centroid on the widest axis (ties by id): always balanced.
@@ -247,36 +222,28 @@ class Builder {
     for (int k = 1; k < 3; ++k)
       if (r.cbox.hi[k] - r.cbox.lo[k] > r.cbox.hi[a] - r.cbox.lo[a]) a = k;
     auto less = [a](const PrimRef& p, const PrimRef& q) {
-      return p.centroid(a) < q.centroid(a) || (p.centroid(a) == q.centroid(a) && p.id < q.id);
+      return p.centroid(a) < q.centroid(a) || (p.centroid(a) == q.centroid(a) && p.id() < q.id());
     };
-    std::uint32_t m = r.begin + r.count() / 2;
-    std::nth_element(prims_.begin() + r.begin, prims_.begin() + m, prims_.begin() + r.end, less);
-    const PrimRef pivot = prims_[m];
-    return partition(r, [&](const PrimRef& p) { return less(p, pivot); });
+    const std::uint32_t half = r.count() / 2;
+    std::nth_element(prims_.begin() + r.begin, prims_.begin() + r.begin + half,
+                     prims_.begin() + r.end, less);
+    // nth_element leaves the smaller half before the median (the order is total): measure them.
+    simd::BvhSides sides;
+    simd::bvhBounds(prims_.data() + r.begin, half, sides.box[0], sides.centroids[0]);
+    simd::bvhBounds(prims_.data() + r.begin + half, r.count() - half, sides.box[1],
+                    sides.centroids[1]);
+    sides.left = half;
+    return sidesOf(r, sides);
   }
 
-  // Moves the primitives that go left before the others (Hoare's scheme) and measures both
-  // sides on the way.
-  template <class GoesLeft>
-  std::pair<Range, Range> partition(const Range& r, GoesLeft goesLeft) {
-    std::uint32_t i = r.begin, j = r.end;
-    Range left{r.begin, 0, {}, {}, r.splits + 1}, right{0, r.end, {}, {}, r.splits + 1};
-    while (true) {
-      while (i < j && goesLeft(prims_[i])) grow(left, prims_[i++]);
-      while (i < j && !goesLeft(prims_[j - 1])) grow(right, prims_[--j]);
-      if (i >= j) break;
-      std::swap(prims_[i], prims_[j - 1]);
-    }
-    left.end = right.begin = i;
-    return {left, right};
+  static std::pair<Range, Range> sidesOf(const Range& r, const simd::BvhSides& s) {
+    const std::uint32_t middle = r.begin + std::uint32_t(s.left);
+    return {Range{r.begin, middle, Bounds(s.box[0]), Bounds(s.centroids[0]), r.splits + 1},
+            Range{middle, r.end, Bounds(s.box[1]), Bounds(s.centroids[1]), r.splits + 1}};
   }
 
-  static int binOf(float c, float lo, float scale) {
-    return std::clamp(int((c - lo) * scale), 0, kBins - 1);
-  }
-
-  std::vector<BvhNode>& nodes_;
-  std::vector<PrimRef> prims_;
+  AlignedVector<BvhNode>& nodes_;
+  AlignedVector<PrimRef> prims_;
   BvhBuildOptions options_;
   bool parallel_ = false;
 };
@@ -289,10 +256,10 @@ bool wellFormed(const Aabb& b) {
 // Moves every multi-primitive leaf to a position that is a multiple of `align` in a new order, in
 // node order (so leaves a traversal meets together lie together), padding the rest of its last
 // block with its first primitive.
-std::vector<std::uint32_t> alignLeaves(std::vector<BvhNode>& nodes,
-                                       const std::vector<std::uint32_t>& order,
-                                       std::uint32_t align) {
-  std::vector<std::uint32_t> aligned;
+AlignedVector<std::uint32_t> alignLeaves(AlignedVector<BvhNode>& nodes,
+                                         const AlignedVector<std::uint32_t>& order,
+                                         std::uint32_t align) {
+  AlignedVector<std::uint32_t> aligned;
   aligned.reserve(order.size() + order.size() / 2);
   for (BvhNode& node : nodes)
     for (std::uint32_t& c : node.child) {
@@ -309,12 +276,11 @@ std::vector<std::uint32_t> alignLeaves(std::vector<BvhNode>& nodes,
 }  // namespace
 
 void Bvh::build(const BoxStream& boxes) {
-  std::vector<PrimRef> prims(boxes.size());
-  for (std::uint32_t i = 0; i < prims.size(); ++i)
-    prims[i] = {{boxes.minX()[i], boxes.minY()[i], boxes.minZ()[i]},
-                i,
-                {boxes.maxX()[i], boxes.maxY()[i], boxes.maxZ()[i]},
-                0};
+  AlignedVector<PrimRef> prims;  // reserved, not sized: a sized vector is zeroed first
+  prims.reserve(boxes.size());
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    prims.push_back(PrimRef({boxes.minX()[i], boxes.minY()[i], boxes.minZ()[i]},
+                            {boxes.maxX()[i], boxes.maxY()[i], boxes.maxZ()[i]}, i));
   buildFrom(std::move(prims), BvhBuildOptions{}, "Bvh::build");
 }
 
@@ -328,16 +294,19 @@ void Bvh::build(std::span<const Aabb> bounds, const BvhBuildOptions& options) {
   if (bounds.size() > kMaxPrimitives)  // checked before the loop below narrows the index
     throw Error("Bvh::build: " + std::to_string(bounds.size()) + " primitives, more than the " +
                 std::to_string(kMaxPrimitives) + " a tree can index");
-  std::vector<PrimRef> prims(bounds.size());
-  for (std::uint32_t i = 0; i < prims.size(); ++i) {
+  AlignedVector<PrimRef> prims;
+  prims.reserve(bounds.size());
+  for (std::uint32_t i = 0; i < bounds.size(); ++i) {
     const Aabb& b = bounds[i];
     if (!wellFormed(b)) validate(b, "Bvh::build: bounds " + std::to_string(i));
-    prims[i] = {{b.min.x(), b.min.y(), b.min.z()}, i, {b.max.x(), b.max.y(), b.max.z()}, 0};
+    prims.push_back(
+        PrimRef({b.min.x(), b.min.y(), b.min.z()}, {b.max.x(), b.max.y(), b.max.z()}, i));
   }
   buildFrom(std::move(prims), options, "Bvh::build");
 }
 
-void Bvh::buildFrom(std::vector<PrimRef> prims, const BvhBuildOptions& options, const char* where) {
+void Bvh::buildFrom(AlignedVector<PrimRef> prims, const BvhBuildOptions& options,
+                    const char* where) {
   if (prims.size() > kMaxPrimitives)
     throw Error(std::string(where) + ": " + std::to_string(prims.size()) +
                 " primitives, more than the " + std::to_string(kMaxPrimitives) +
@@ -365,7 +334,7 @@ namespace {
 // One backward pass: children always follow their parent in the array, so every child is seen
 // before its parent. `leafBox(reference, k)` returns a leaf slot's bounds.
 template <class LeafBox>
-void refitNodes(std::vector<BvhNode>& nodes, LeafBox leafBox) {
+void refitNodes(AlignedVector<BvhNode>& nodes, LeafBox leafBox) {
   for (std::size_t n = nodes.size(); n-- > 0;) {
     BvhNode& node = nodes[n];
     for (int k = 0; k < BvhNode::kWidth; ++k) {
@@ -376,12 +345,11 @@ void refitNodes(std::vector<BvhNode>& nodes, LeafBox leafBox) {
         b = leafBox(c);
       } else {
         const BvhNode& sub = nodes[c];
-        b.lo = {*std::min_element(sub.minX, sub.minX + BvhNode::kWidth),
-                *std::min_element(sub.minY, sub.minY + BvhNode::kWidth),
-                *std::min_element(sub.minZ, sub.minZ + BvhNode::kWidth)};
-        b.hi = {*std::max_element(sub.maxX, sub.maxX + BvhNode::kWidth),
-                *std::max_element(sub.maxY, sub.maxY + BvhNode::kWidth),
-                *std::max_element(sub.maxZ, sub.maxZ + BvhNode::kWidth)};
+        for (int s = 0; s < BvhNode::kWidth; ++s) {
+          const float lo[3] = {sub.minX[s], sub.minY[s], sub.minZ[s]};
+          const float hi[3] = {sub.maxX[s], sub.maxY[s], sub.maxZ[s]};
+          b.grow(lo), b.grow(hi);
+        }
       }
       node.minX[k] = b.lo[0], node.minY[k] = b.lo[1], node.minZ[k] = b.lo[2];
       node.maxX[k] = b.hi[0], node.maxY[k] = b.hi[1], node.maxZ[k] = b.hi[2];
@@ -398,8 +366,9 @@ void Bvh::refit(const BoxStream& boxes) {
   refitNodes(nodes_, [&](std::uint32_t c) {
     const std::uint32_t id = BvhNode::leafFirst(c);
     Bounds b;
-    b.lo = {boxes.minX()[id], boxes.minY()[id], boxes.minZ()[id]};
-    b.hi = {boxes.maxX()[id], boxes.maxY()[id], boxes.maxZ()[id]};
+    const float lo[3] = {boxes.minX()[id], boxes.minY()[id], boxes.minZ()[id]};
+    const float hi[3] = {boxes.maxX()[id], boxes.maxY()[id], boxes.maxZ()[id]};
+    b.grow(lo), b.grow(hi);
     return b;
   });
 }
@@ -416,8 +385,7 @@ void Bvh::refit(std::span<const Aabb> bounds) {
     Bounds b;
     for (std::uint32_t i = 0; i < BvhNode::leafCount(c); ++i) {
       const Aabb& p = bounds[direct ? first : order_[first + i]];
-      b.grow(std::array<float, 3>{p.min.x(), p.min.y(), p.min.z()});
-      b.grow(std::array<float, 3>{p.max.x(), p.max.y(), p.max.z()});
+      b.grow(p.min.data()), b.grow(p.max.data());
     }
     return b;
   });

@@ -168,7 +168,10 @@ PairMethod2d resolved(PairMethod2d method, const RectStream& r) {
 }  // namespace
 
 void PairFinder2d::find(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method) {
-  switch (resolved(method, r)) {
+  const PairMethod2d m = resolved(method, r);
+  switch (m) {
+    case PairMethod2d::kAuto:  // resolved above
+      break;
     case PairMethod2d::kQuadtree:
       return quadtreePairs(r, pairs);
     case PairMethod2d::kBrute:
@@ -177,7 +180,7 @@ void PairFinder2d::find(const RectStream& r, std::vector<Pair>& pairs, PairMetho
       return simd::bruteRects2d(view(r), pairs);
     case PairMethod2d::kBandedSweep:
     case PairMethod2d::kSweep: {
-      const bool banded = method == PairMethod2d::kBandedSweep;
+      const bool banded = m == PairMethod2d::kBandedSweep;
       if (referencePathActive())
         return scratch_->sweep(r, pairs, banded, reference::sweepRects2dScalar);
       return scratch_->sweep(

@@ -358,9 +358,10 @@ std::vector<std::uint32_t> MeshBvh::overlapping(const Triangle& t) const {
 // ---- build and refit -------------------------------------------------------------------------
 
 namespace {
-std::vector<Aabb> triangleBounds(const Mesh& m) {
-  std::vector<Aabb> b(m.size());
-  for (std::size_t i = 0; i < m.size(); ++i) b[i] = boundsOf(m.triangle(i));
+AlignedVector<Aabb> triangleBounds(const Mesh& m) {
+  AlignedVector<Aabb> b;
+  b.reserve(m.size());
+  for (std::size_t i = 0; i < m.size(); ++i) b.push_back(boundsOf(m.triangle(i)));
   return b;
 }
 
@@ -392,16 +393,21 @@ void MeshBvh::refit(std::span<const Vec3f> vertices) {
 
 void MeshBvh::fillBlocks() {
   const auto order = bvh_.order();
-  blocks_.resize(order.size() / TriangleBlock::kWidth);
-  for (std::size_t b = 0; b < blocks_.size(); ++b)
+  // Appended one by one rather than resized: resizing would zero 30 MB only to overwrite it.
+  blocks_.clear();
+  blocks_.reserve(order.size() / TriangleBlock::kWidth);
+  for (std::size_t b = 0; b < order.size() / TriangleBlock::kWidth; ++b) {
+    TriangleBlock block;
     for (int l = 0; l < TriangleBlock::kWidth; ++l) {
       const std::uint32_t id = order[b * TriangleBlock::kWidth + l];
       const Triangle t = mesh_.triangle(id);
       const Vec3f* v[3] = {&t.a, &t.b, &t.c};
       for (int q = 0; q < 3; ++q)
-        for (int k = 0; k < 3; ++k) blocks_[b].v[q][k][l] = (*v[q])[k];
-      blocks_[b].id[l] = id;
+        for (int k = 0; k < 3; ++k) block.v[q][k][l] = (*v[q])[k];
+      block.id[l] = id;
     }
+    blocks_.push_back(block);
+  }
 }
 
 }  // namespace simdphys
