@@ -239,36 +239,9 @@ class RayPacket {
   bool finite_ = true;
 };
 
-// Whether the rays present all point into one octant (the sign bits of their directions agree):
-// RayStreamOptions::Mode::kAuto's coherence test.
-inline bool sameOctant(const RaysView& rays, const std::uint32_t* index, std::size_t n) {
-  int octant = -1;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (index[i] == kAbsentLane) continue;
-    int o = 0;
-    for (int a = 0; a < 3; ++a) o |= int(std::signbit(rays.direction[a][index[i]])) << a;
-    if (octant >= 0 && o != octant) return false;
-    octant = o;
-  }
-  return true;
-}
-
-// Packets of N; with onlyCoherent, a packet whose rays fail sameOctant is traced ray by ray.
+// Packets of N.
 template <std::size_t N>
 void closestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                       std::size_t packets, bool onlyCoherent, MeshHit* out) {
-  for (std::size_t p = 0; p < packets; ++p) {
-    const std::uint32_t* lanes = index + p * N;
-    if (!onlyCoherent || sameOctant(rays, lanes, N)) {
-      RayPacket<N>(mesh, rays, lanes).run(out);
-      continue;
-    }
-    for (std::size_t i = 0; i < N; ++i) {
-      if (lanes[i] == kAbsentLane) continue;
-      const detail::TraversalRay ray = rayAt(rays, lanes[i]);
-      Closest closest(ray.tMax);
-      traverse(mesh, ray, closest);
-      out[lanes[i]] = closest.result();
-    }
-  }
+                       std::size_t packets, MeshHit* out) {
+  for (std::size_t p = 0; p < packets; ++p) RayPacket<N>(mesh, rays, index + p * N).run(out);
 }

@@ -73,7 +73,6 @@ class RayCore {
       const auto child = hn::Load(du, n.child + h);
       const int kept = int(compressStore32(du, child, hn::RebindMask(du, hit), refs + count));
       compressStore32(d, enter, hit, dists + count);
-      // Large meshes miss the cache: fetch what will be visited while the rest is tested.
       // Large meshes miss the cache: fetch the first line of what will be visited (a node's
       // x rows, a block's x coordinates) while the rest is tested.
       for (int k = count; k < count + kept; ++k) prefetch(refs[k]);
@@ -152,14 +151,75 @@ void MeshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* 
   }
 }
 
+// 10 bits spread to every third bit of 30.
+std::uint32_t spreadBits(std::uint32_t x) {
+  x &= 0x3ffu;
+  x = (x | x << 16) & 0x30000ffu;
+  x = (x | x << 8) & 0x300f00fu;
+  x = (x | x << 4) & 0x30c30c3u;
+  return (x | x << 2) & 0x9249249u;
+}
+
+void MeshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                 std::size_t n, std::uint32_t* key) {
+  if (mesh.nodeCount == 0) {
+    std::fill(key, key + n, kMissKey);
+    return;
+  }
+  const BvhNode& root = mesh.nodes[0];
+  const float* rows[6] = {root.minX, root.minY, root.minZ, root.maxX, root.maxY, root.maxZ};
+  float lo[3], scale[3];
+  for (int a = 0; a < 3; ++a) {
+    float l = std::numeric_limits<float>::infinity(), h = -l;
+    for (int k = 0; k < BvhNode::kWidth; ++k)
+      l = std::min(l, rows[a][k]), h = std::max(h, rows[3 + a][k]);
+    lo[a] = l, scale[a] = h > l ? 511 / (h - l) : 0;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    // The slab test's fields only: the watertight shear is not needed for the root's boxes.
+    detail::TraversalRay ray;
+    const std::uint32_t i = index[k];
+    detail::setSlabs(ray, rays.origin[0][i], rays.origin[1][i], rays.origin[2][i],
+                     rays.direction[0][i], rays.direction[1][i], rays.direction[2][i],
+                     rays.tMax[i]);
+    Any any{ray.tMax};
+    alignas(64) std::uint32_t refs[2 * BvhNode::kWidth];
+    alignas(64) float dists[2 * BvhNode::kWidth];
+    const int entered =
+        ray.finiteInverse ? RayCore<Any, true>(mesh, ray, any).expand(root, ray.tMax, refs, dists)
+                          : RayCore<Any, false>(mesh, ray, any).expand(root, ray.tMax, refs, dists);
+    if (entered == 0) {
+      key[k] = kMissKey;
+      continue;
+    }
+    const float t = *std::min_element(dists, dists + entered);
+    std::uint32_t code = 0;
+    for (int a = 0; a < 3; ++a) {
+      const float u = (ray.origin[a] + t * rays.direction[a][i] - lo[a]) * scale[a];
+      code |= spreadBits(u > 0 ? std::uint32_t(std::min(u, 511.0f)) : 0) << a;  // NaN: 0
+    }
+    key[k] = code;
+  }
+}
+
 #include "simd/bvh_packet-inl.hpp"
 
 void MeshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                           std::size_t packets, int width, bool onlyCoherent, MeshHit* out) {
+                           std::size_t packets, int width, MeshHit* out) {
   if (width == 16)
-    closestHitPackets<16>(mesh, rays, index, packets, onlyCoherent, out);
+    closestHitPackets<16>(mesh, rays, index, packets, out);
   else
-    closestHitPackets<8>(mesh, rays, index, packets, onlyCoherent, out);
+    closestHitPackets<8>(mesh, rays, index, packets, out);
+}
+
+void MeshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                       std::size_t n, MeshHit* out) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const detail::TraversalRay ray = rayAt(rays, index[i]);
+    Closest closest(ray.tMax);
+    traverse(mesh, ray, closest);
+    out[index[i]] = closest.result();
+  }
 }
 
 void MeshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
@@ -180,6 +240,8 @@ namespace simdphys::simd {
 HWY_EXPORT(MeshClosestHits);
 HWY_EXPORT(MeshAnyHits);
 HWY_EXPORT(MeshClosestHitPackets);
+HWY_EXPORT(MeshClosestHitsOf);
+HWY_EXPORT(MeshRayKeys);
 
 void meshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
   HWY_DYNAMIC_DISPATCH(MeshClosestHits)(mesh, rays, id, t);
@@ -188,8 +250,16 @@ void meshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) 
   HWY_DYNAMIC_DISPATCH(MeshAnyHits)(mesh, rays, hit);
 }
 void meshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                           std::size_t packets, int width, bool onlyCoherent, MeshHit* out) {
-  HWY_DYNAMIC_DISPATCH(MeshClosestHitPackets)(mesh, rays, index, packets, width, onlyCoherent, out);
+                           std::size_t packets, int width, MeshHit* out) {
+  HWY_DYNAMIC_DISPATCH(MeshClosestHitPackets)(mesh, rays, index, packets, width, out);
+}
+void meshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                       std::size_t n, MeshHit* out) {
+  HWY_DYNAMIC_DISPATCH(MeshClosestHitsOf)(mesh, rays, index, n, out);
+}
+void meshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                 std::size_t n, std::uint32_t* key) {
+  HWY_DYNAMIC_DISPATCH(MeshRayKeys)(mesh, rays, index, n, key);
 }
 }  // namespace simdphys::simd
 #endif

@@ -315,9 +315,19 @@ namespace simdphys::simd {
 inline constexpr std::uint32_t kAbsentLane = ~0u;
 // Rays traced in packets of `width` (8 or 16): packet p is the rays index[p * width + i] of `rays`
 // (kAbsentLane: none); each ray's closest hit is written at out[its index], equal to what
-// meshClosestHits answers for it. With onlyCoherent, a packet whose rays do not all point into
-// one octant is traced one ray at a time.
+// meshClosestHits answers for it.
 void meshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                           std::size_t packets, int width, bool onlyCoherent, MeshHit* out);
+                           std::size_t packets, int width, MeshHit* out);
+// The rays index[0, n) of `rays` one at a time, in that order, each hit written at out[its index].
+void meshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                       std::size_t n, MeshHit* out);
+// For ordering rays so that neighbours walk the same nodes: per ray index[k] of `rays`, key[k] is
+// kMissKey if the ray enters no child of the root (it then hits nothing: the traversal's own first
+// test), else the Morton code (9 bits an axis, within the root's bounds) of the point where it
+// enters its nearest root child. (Putting the direction's octant above it was measured 6% slower
+// on W2's incoherent rays.)
+inline constexpr std::uint32_t kMissKey = ~0u;
+void meshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                 std::size_t n, std::uint32_t* key);
 
 }  // namespace simdphys::simd

@@ -69,7 +69,7 @@ constexpr std::size_t paddedSize(std::size_t n) {
 }
 
 namespace detail {
-// kStreamAlign-aligned memory. Blocks of several MiB are aligned to 2 MiB and offered to the
+// kStreamAlign-aligned memory. Blocks of 2 MiB or more are aligned to 2 MiB and offered to the
 // kernel for transparent huge pages (Linux): one fault instead of 512, and fewer TLB misses, for
 // the streams and trees that fill them once and then sweep them.
 void* allocateAligned(std::size_t bytes);

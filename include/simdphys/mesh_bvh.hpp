@@ -66,9 +66,12 @@ struct RayStreamOptions {
   enum class Mode {
     // Packets for the groups whose rays all point into the same octant (the signs of the three
     // direction components agree: a camera's tile does, 16 random directions almost never);
-    // single rays for the other groups.
+    // single rays for the other groups. Thousands of single rays are first sorted by where they
+    // enter the tree, so that rays traced one after another walk the same nodes (random rays
+    // over a large mesh otherwise miss the cache at nearly every node); the hits come back in the
+    // stream's order.
     kAuto,
-    kSingle,   // one ray at a time (incoherent rays)
+    kSingle,   // one ray at a time, in the stream's order
     kPackets,  // every group as a packet, whatever its directions
   };
   Mode mode = Mode::kAuto;
@@ -121,8 +124,6 @@ class MeshBvh {
 
  private:
   void fillBlocks();
-  void raycastPackets(const RayStream& rays, std::span<MeshHit> out,
-                      const RayStreamOptions& options) const;
   template <class Shape>
   std::vector<std::uint32_t> overlappingShape(const Shape& shape, const Aabb& bounds) const;
 

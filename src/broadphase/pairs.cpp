@@ -84,7 +84,7 @@ struct CellBuffer {
     for (auto* v : {&maxX, &maxY, &maxZ}) v->assign(size, -inf);
     id.resize(size), loY.resize(size), loZ.resize(size), keys.resize(n);
     for (std::size_t k = 0; k < n; ++k) keys[k] = e[k].minX;
-    const std::vector<std::uint32_t>& order = sorter.sort(keys.data(), n);
+    const auto& order = sorter.sort(keys.data(), n);
     for (std::size_t k = 0; k < n; ++k) {
       const Entry& from = e[order[k]];
       minX[k] = from.minX, maxX[k] = from.maxX, minY[k] = from.minY, maxY[k] = from.maxY;

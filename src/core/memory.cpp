@@ -10,8 +10,8 @@
 namespace simdphys::detail {
 namespace {
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
-// Below this a huge page would mostly hold nothing, and the faults saved are few.
-constexpr std::size_t kHugeFrom = 4 * kHugePage;
+// From one huge page up. The alignment's slack is address space only: never touched, never backed.
+constexpr std::size_t kHugeFrom = kHugePage;
 
 std::size_t alignmentFor(std::size_t bytes) {
   return bytes >= kHugeFrom ? kHugePage : kStreamAlign;

@@ -80,7 +80,7 @@ struct PairFinder2d::Scratch {
         maxY.assign(size, -inf);
     id.assign(size, 0), bandLo.assign(size, 0);
     cursor.assign(begin.begin(), begin.end() - 1);
-    const std::vector<std::uint32_t>& order = sorter.sort(r.minX().data(), n);
+    const auto& order = sorter.sort(r.minX().data(), n);
     for (const std::uint32_t i : order)
       for (int k = loBand[i]; k <= hiBand[i]; ++k) {
         const std::uint32_t at = cursor[std::size_t(k)]++;

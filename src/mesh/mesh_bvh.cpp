@@ -1,14 +1,14 @@
-// MeshBvh: the build into triangle blocks, refit, and the queries with their reference path.
+// MeshBvh: the build into triangle blocks, refit, and the single queries with their reference
+// path (ray streams: ray_stream.cpp).
 #include "simdphys/mesh_bvh.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "simd/kernels.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
-#include "src/bvh/mesh_ray.hpp"
+#include "src/mesh/mesh_internal.hpp"
 
 namespace simdphys {
 
@@ -123,22 +123,6 @@ void validateRay(const Ray& ray, float tMax, const std::string& where) {
   if (!(tMax >= 0)) throw Error(where + ": tMax " + std::to_string(tMax) + " is negative or NaN");
 }
 
-simd::MeshView meshView(const Bvh& bvh, std::span<const TriangleBlock> blocks) {
-  return {bvh.nodes().data(), bvh.nodes().size(), blocks.data()};
-}
-
-// Rays in chunks: each a kernel call of its own, chunks spread over the threads (each ray is
-// independent, so the answers do not depend on the thread count).
-constexpr std::size_t kChunk = 256;
-simd::RaysView chunk(const RayStream& rays, std::size_t begin) {
-  simd::RaysView v{};
-  for (int k = 0; k < 3; ++k)
-    v.origin[k] = rays.origin(k).data() + begin, v.direction[k] = rays.direction(k).data() + begin;
-  v.tMax = rays.tMax().data() + begin;
-  v.count = std::min(kChunk, rays.size() - begin);
-  return v;
-}
-
 detail::TraversalRay traversal(const Ray& r, float tMax) {
   return detail::traversalRay(r.origin.x(), r.origin.y(), r.origin.z(), r.direction.x(),
                               r.direction.y(), r.direction.z(), tMax);
@@ -175,103 +159,6 @@ bool MeshBvh::occluded(const Ray& ray, float tMax) const {
   std::uint8_t hit = 0;
   simd::meshAnyHits(meshView(bvh_, blocks_), v, &hit);
   return hit != 0;
-}
-
-void MeshBvh::raycast(const RayStream& rays, std::span<MeshHit> out,
-                      const RayStreamOptions& options) const {
-  if (out.size() != rays.size())
-    throw Error("MeshBvh::raycast: " + std::to_string(out.size()) + " hits for " +
-                std::to_string(rays.size()) + " rays");
-  if (options.packetSize != 0 && options.packetSize != 8 && options.packetSize != 16)
-    throw Error("MeshBvh::raycast: packetSize " + std::to_string(options.packetSize) +
-                " is not 0, 8 or 16");
-  const bool ref = referencePathActive();
-  if (!ref && options.mode != RayStreamOptions::Mode::kSingle) {
-    raycastPackets(rays, out, options);
-    return;
-  }
-  const std::int64_t chunks = std::int64_t((rays.size() + kChunk - 1) / kChunk);
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::int64_t c = 0; c < chunks; ++c) {
-    const std::size_t begin = std::size_t(c) * kChunk;
-    const simd::RaysView v = chunk(rays, begin);
-    if (ref) {
-      for (std::size_t i = 0; i < v.count; ++i)
-        out[begin + i] = reference::closestHit(
-            bvh_, blocks_,
-            detail::traversalRay(v.origin[0][i], v.origin[1][i], v.origin[2][i], v.direction[0][i],
-                                 v.direction[1][i], v.direction[2][i], v.tMax[i]));
-      continue;
-    }
-    std::uint32_t id[kChunk];
-    float t[kChunk];
-    simd::meshClosestHits(meshView(bvh_, blocks_), v, id, t);
-    for (std::size_t i = 0; i < v.count; ++i) out[begin + i] = {id[i], t[i]};
-  }
-}
-
-// Groups of rays (rows of the stream or tiles of its image), their lanes' ray indices built per
-// batch of groups, batches spread over the threads like single rays' chunks.
-void MeshBvh::raycastPackets(const RayStream& rays, std::span<MeshHit> out,
-                             const RayStreamOptions& options) const {
-  // 16 by default: measured faster than 8 on AVX-512 and AVX2, equal on SSE4 (docs/bvh.md).
-  const std::uint32_t width = options.packetSize != 0 ? options.packetSize : 16;
-  const std::size_t n = rays.size();
-  // Tiles: 4 rays wide, width / 4 rows high.
-  const std::size_t imageWidth = options.imageWidth;
-  const std::size_t tilesX = imageWidth ? (imageWidth + 3) / 4 : 0;
-  const std::size_t tileRows = width / 4;
-  const std::size_t imageRows = imageWidth ? (n + imageWidth - 1) / imageWidth : 0;
-  const std::size_t groups =
-      imageWidth ? tilesX * ((imageRows + tileRows - 1) / tileRows) : (n + width - 1) / width;
-  const auto lane = [&](std::size_t g, std::uint32_t i) -> std::uint32_t {
-    std::size_t at;
-    if (imageWidth == 0) {
-      at = g * width + i;
-    } else {
-      const std::size_t x = g % tilesX * 4 + i % 4, y = g / tilesX * tileRows + i / 4;
-      if (x >= imageWidth) return simd::kAbsentLane;
-      at = y * imageWidth + x;
-    }
-    return at < n ? std::uint32_t(at) : simd::kAbsentLane;
-  };
-  simd::RaysView all = chunk(rays, 0);
-  all.count = n;
-  const simd::MeshView mesh = meshView(bvh_, blocks_);
-  const bool onlyCoherent = options.mode == RayStreamOptions::Mode::kAuto;
-  const std::size_t perBatch = kChunk / width;
-  const std::int64_t batches = std::int64_t((groups + perBatch - 1) / perBatch);
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::int64_t b = 0; b < batches; ++b) {
-    const std::size_t first = std::size_t(b) * perBatch;
-    const std::size_t count = std::min(perBatch, groups - first);
-    std::uint32_t index[kChunk];
-    for (std::size_t g = 0; g < count; ++g)
-      for (std::uint32_t i = 0; i < width; ++i) index[g * width + i] = lane(first + g, i);
-    simd::meshClosestHitPackets(mesh, all, index, count, int(width), onlyCoherent, out.data());
-  }
-}
-
-void MeshBvh::occluded(const RayStream& rays, std::span<std::uint8_t> out) const {
-  if (out.size() != rays.size())
-    throw Error("MeshBvh::occluded: " + std::to_string(out.size()) + " results for " +
-                std::to_string(rays.size()) + " rays");
-  const bool ref = referencePathActive();
-  const std::int64_t chunks = std::int64_t((rays.size() + kChunk - 1) / kChunk);
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::int64_t c = 0; c < chunks; ++c) {
-    const std::size_t begin = std::size_t(c) * kChunk;
-    const simd::RaysView v = chunk(rays, begin);
-    if (!ref) {
-      simd::meshAnyHits(meshView(bvh_, blocks_), v, out.data() + begin);
-      continue;
-    }
-    for (std::size_t i = 0; i < v.count; ++i)
-      out[begin + i] = reference::anyHit(
-          bvh_, blocks_,
-          detail::traversalRay(v.origin[0][i], v.origin[1][i], v.origin[2][i], v.direction[0][i],
-                               v.direction[1][i], v.direction[2][i], v.tMax[i]));
-  }
 }
 
 // ---- segments --------------------------------------------------------------------------------

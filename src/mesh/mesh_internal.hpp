@@ -1,0 +1,24 @@
+// What mesh_bvh.cpp and ray_stream.cpp share: the reference path's ray traversals and the kernels'
+// view of a tree.
+#pragma once
+
+#include <span>
+
+#include "simd/kernels.hpp"
+#include "simdphys/mesh_bvh.hpp"
+#include "src/bvh/mesh_ray.hpp"
+
+namespace simdphys {
+
+namespace reference {
+// The SIMD traversal's algorithm with a scalar core (mesh_bvh.cpp).
+MeshHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
+                   const detail::TraversalRay& ray);
+bool anyHit(const Bvh& bvh, std::span<const TriangleBlock> blocks, const detail::TraversalRay& ray);
+}  // namespace reference
+
+inline simd::MeshView meshView(const Bvh& bvh, std::span<const TriangleBlock> blocks) {
+  return {bvh.nodes().data(), bvh.nodes().size(), blocks.data()};
+}
+
+}  // namespace simdphys
