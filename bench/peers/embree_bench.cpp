@@ -6,8 +6,10 @@
 #include <embree3/rtcore.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "bench/rays_common.hpp"
 
@@ -77,6 +79,40 @@ void intersect1(const RTCScene scene, const RayStream& rays, std::vector<MeshHit
   }
 }
 
+// Embree's stream API (rtcIntersect1M, the default incoherent context), the stream's rays in calls
+// of 4,096: the counterpart of MeshBvh::raycast on a stream. Filling its ray structures is timed,
+// as in intersect1 (simdphys reads its own stream as given).
+void intersect1M(const RTCScene scene, const RayStream& rays, std::vector<MeshHit>& hits) {
+  constexpr std::int64_t kCall = 4096;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  const std::int64_t n = std::int64_t(rays.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t begin = 0; begin < n; begin += kCall) {
+    const std::int64_t count = std::min(kCall, n - begin);
+    std::vector<RTCRayHit> stream(static_cast<std::size_t>(count));
+    for (std::int64_t k = 0; k < count; ++k) {
+      const std::size_t i = std::size_t(begin + k);
+      RTCRayHit& rh = stream[std::size_t(k)];
+      rh = RTCRayHit{};
+      rh.ray.org_x = rays.origin(0)[i], rh.ray.org_y = rays.origin(1)[i];
+      rh.ray.org_z = rays.origin(2)[i];
+      rh.ray.dir_x = rays.direction(0)[i], rh.ray.dir_y = rays.direction(1)[i];
+      rh.ray.dir_z = rays.direction(2)[i];
+      rh.ray.tnear = 0, rh.ray.tfar = std::numeric_limits<float>::infinity();
+      rh.ray.mask = ~0u;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect1M(scene, &context, stream.data(), unsigned(count), sizeof(RTCRayHit));
+    for (std::int64_t k = 0; k < count; ++k) {
+      const RTCRayHit& rh = stream[std::size_t(k)];
+      hits[std::size_t(begin + k)] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID
+                                         ? MeshHit{}
+                                         : MeshHit{rh.hit.primID, rh.ray.tfar};
+    }
+  }
+}
+
 // Packets of 16 rays: the 4 x 4 tiles of the image (rays are in scanline order).
 void intersect16(const RTCScene scene, const RayStream& rays, std::vector<MeshHit>& hits) {
   constexpr std::uint32_t w = scenes::kCameraWidth, h = scenes::kCameraHeight;
@@ -128,6 +164,7 @@ void registerEmbree() {
   registerIntersect(RaysKind::kCoherent, "embree_intersect1", intersect1);
   registerIntersect(RaysKind::kCoherent, "embree_intersect16", intersect16);
   registerIntersect(RaysKind::kIncoherent, "embree_intersect1", intersect1);
+  registerIntersect(RaysKind::kIncoherent, "embree_intersect1M", intersect1M);
   for (auto [method, quality] : {std::pair{"embree_medium", RTC_BUILD_QUALITY_MEDIUM},
                                  std::pair{"embree_high", RTC_BUILD_QUALITY_HIGH}}) {
     registerOnce("rays/build", method, "peer", kRaysTriangles, [quality](benchmark::State& state) {
