@@ -62,6 +62,7 @@ struct Bounds {
       hn::Store(clo[c], d, centroids.lo + c * kLanes);
       hn::Store(chi[c], d, centroids.hi + c * kLanes);
     }
+    box.lo[3] = box.hi[3] = centroids.lo[3] = centroids.hi[3] = 0;  // unused; written on 1 lane too
   }
 };
 
@@ -87,8 +88,12 @@ void BvhBin(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& f
     alignas(16) std::int32_t index[4];
     for (std::size_t c = 0; c < kChunks; ++c) {
       const std::size_t k = c * kLanes;
-      const V x = hn::Mul(hn::Sub(hn::Add(p.lo[c], p.hi[c]), hn::Load(d, origin + k)),
-                          hn::Load(d, scale + k));
+      // An axis of scale 0 puts everything in bin 0, even a centroid that overflowed to inf
+      // (whose product with 0 is NaN, which Min/Max need not clamp).
+      const V s = hn::Load(d, scale + k);
+      const V x = hn::IfThenElseZero(
+          hn::Gt(s, hn::Zero(d)),
+          hn::Mul(hn::Sub(hn::Add(p.lo[c], p.hi[c]), hn::Load(d, origin + k)), s));
       hn::Store(hn::ConvertTo(di, hn::Min(hn::Max(x, hn::Zero(d)), top)), di, index + k);
     }
     for (int a = 0; a < 3; ++a) {
@@ -112,6 +117,7 @@ void BvhBin(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& f
         hn::Store(hn::Min(hn::Load(d, b0.lo + l), hn::Load(d, b1.lo + l)), d, out.box[a][k].lo + l);
         hn::Store(hn::Max(hn::Load(d, b0.hi + l), hn::Load(d, b1.hi + l)), d, out.box[a][k].hi + l);
       }
+      out.box[a][k].lo[3] = out.box[a][k].hi[3] = 0;  // unused; written on 1 lane too
       out.count[a][k] = sets[0].count[a][k] + sets[1].count[a][k];
     }
 }
@@ -121,7 +127,7 @@ void BvhPartition(detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& f
   const float origin = frame.origin[axis], scale = frame.scale[axis];
   // The binning kernel's operations on one lane, so a primitive goes to the side its bin says.
   auto goesLeft = [&](const detail::BvhPrimRef& p) {
-    const float x = (p.centroid(axis) - origin) * scale;
+    const float x = scale > 0 ? (p.centroid(axis) - origin) * scale : 0.0f;
     return int(std::min(std::max(x, 0.0f), float(kBvhBins - 1))) < split;
   };
   Bounds left, right;

@@ -2,7 +2,8 @@
 // (bvh_packet-inl.hpp, for coherent rays): the 8 children of a node
 // are slab-tested together, the ones hit visited nearest first; a leaf's 8 triangles are tested
 // together with the watertight test (watertight-inl.hpp), the same arithmetic as the scalar
-// intersectTriangle, so every path returns the reference's hits bit for bit.
+// intersectTriangle, so every path returns the reference's hits bit for bit. Also the keys that
+// order incoherent rays (MeshRayKeys: the root's slab test and a Morton code).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "simd/bvh_ray.cpp"
 #include <hwy/cache_control.h>

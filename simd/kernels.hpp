@@ -98,7 +98,7 @@ struct alignas(16) BvhBox {
 inline constexpr int kBvhBins = 16;
 // The bins of a range: on axis a, a primitive goes to bin
 // clamp(int((centroid(a) - origin[a]) * scale[a]), 0, kBvhBins - 1), a scale of 0 putting all in
-// bin 0.
+// bin 0 (a NaN from an infinite centroid included).
 struct BvhBinFrame {
   float origin[3], scale[3];
 };
@@ -293,7 +293,8 @@ struct MeshView {
   std::size_t nodeCount;
   const TriangleBlock* blocks;
 };
-// Rays as SoA: origin, direction (non-zero), tMax (>= 0).
+// Rays as SoA: origin, direction (non-zero), tMax (>= 0). Read ray by ray, so, unlike the streams
+// above, the arrays need no padding (a single ray is a view of one).
 struct RaysView {
   const float* origin[3];
   const float* direction[3];
@@ -324,8 +325,7 @@ void meshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::ui
 // For ordering rays so that neighbours walk the same nodes: per ray index[k] of `rays`, key[k] is
 // kMissKey if the ray enters no child of the root (it then hits nothing: the traversal's own first
 // test), else the Morton code (9 bits an axis, within the root's bounds) of the point where it
-// enters its nearest root child. (Putting the direction's octant above it was measured 6% slower
-// on W2's incoherent rays.)
+// enters its nearest root child.
 inline constexpr std::uint32_t kMissKey = ~0u;
 void meshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
                  std::size_t n, std::uint32_t* key);

@@ -182,6 +182,25 @@ TEST_P(MeshPackets, LanesWithMinusInfinityTMaxHitNothing) {
   }
 }
 
+// A tree with no triangles: every mode answers every ray with a miss, also with enough single rays
+// (over 4,096) for kAuto to order them, and an empty stream is no error.
+TEST_P(MeshPackets, EmptyMeshMissesEveryRay) {
+  const MeshBvh bvh(Mesh{});
+  const std::vector<Ray> rays = test::randomRays(54, 5000, 10);
+  RayStream stream;
+  for (const Ray& r : rays) stream.push(r);
+  for (const RayStreamOptions& options :
+       {RayStreamOptions{Mode::kSingle, 0, 0}, RayStreamOptions{Mode::kAuto, 0, 0},
+        RayStreamOptions{Mode::kPackets, 8, 0}}) {
+    std::vector<MeshHit> found(rays.size(), MeshHit{0, 0});  // not a miss: must be overwritten
+    bvh.raycast(stream, found, options);
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      expectSame(found[i], MeshHit{}, describe(options) + ", ray " + std::to_string(i));
+    std::vector<MeshHit> none;
+    EXPECT_NO_THROW(bvh.raycast(RayStream{}, none, options));
+  }
+}
+
 TEST(MeshPacketErrors, BadPacketSizeIsRejected) {
   const MeshBvh bvh(scenes::makeHeightfield(5));
   RayStream s;

@@ -78,6 +78,7 @@ void freeAligned(void* p, std::size_t bytes) noexcept;
 
 template <class T>
 struct AlignedAllocator {
+  static_assert(alignof(T) <= kStreamAlign, "AlignedAllocator aligns to kStreamAlign at least");
   using value_type = T;
   AlignedAllocator() = default;
   template <class U>
@@ -118,7 +119,7 @@ class Stream {
   void clear() { resize(0); }
 
  private:
-  std::vector<T, AlignedAllocator<T>> data_;
+  AlignedVector<T> data_;
   std::size_t size_ = 0;
   T pad_{};
 };

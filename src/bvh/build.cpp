@@ -170,7 +170,8 @@ class Builder {
   }
 
   std::pair<Range, Range> split(const Range& r) {
-    // Binning has a fixed cost (48 bins to clear and sweep) that small ranges do not repay.
+    // Binning has a fixed cost (two sets of 48 bins to clear and merge, then the sweep) that small
+    // ranges do not repay.
     if (r.splits < kMaxSahDepth && r.count() > kSmallRange)
       if (auto s = sahSplit(r)) return *s;
     return medianSplit(r);
@@ -183,7 +184,7 @@ class Builder {
       const float extent = r.cbox.hi[a] - r.cbox.lo[a];
       const float scale = kBins * (1 - 1e-6f) / extent;
       frame.origin[a] = r.cbox.lo[a];
-      // A denormal extent would give an infinite scale, and 0 * inf a NaN: not split on.
+      // An extent below 16 / FLT_MAX would give an infinite scale, and 0 * inf a NaN: not split on.
       frame.scale[a] = extent > 0 && scale < kInf ? scale : 0;
     }
     simd::BvhBins bins;
@@ -213,6 +214,9 @@ class Builder {
     if (bestAxis < 0) return std::nullopt;
     simd::BvhSides sides;
     simd::bvhPartition(prims_.data() + r.begin, r.count(), frame, bestAxis, bestBin, sides);
+    // The partition repeats the binning's arithmetic, so neither side is empty; should a platform
+    // ever round the two differently, the median split still makes progress.
+    if (sides.left == 0 || sides.left == r.count()) return std::nullopt;
     return sidesOf(r, sides);
   }
 

@@ -9,12 +9,17 @@
 
 namespace simdphys::detail {
 namespace {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+constexpr bool kHugePages = true;
+#else
+constexpr bool kHugePages = false;  // the large alignment would buy nothing
+#endif
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
-// From one huge page up. The alignment's slack is address space only: never touched, never backed.
-constexpr std::size_t kHugeFrom = kHugePage;
 
+// From one huge page up. The alignment's slack (and the size's rounding up to it) is address
+// space only: never touched, never backed.
 std::size_t alignmentFor(std::size_t bytes) {
-  return bytes >= kHugeFrom ? kHugePage : kStreamAlign;
+  return kHugePages && bytes >= kHugePage ? kHugePage : kStreamAlign;
 }
 }  // namespace
 

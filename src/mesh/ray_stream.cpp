@@ -2,7 +2,6 @@
 // single rays in an order that keeps the tree in cache), chunks spread over the threads.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "src/core/radix_sort.hpp"
@@ -146,10 +145,13 @@ void tracePackets(const MeshBvh& bvh, const RayStream& rays, std::span<MeshHit> 
   };
   const bool onlyCoherent = options.mode == RayStreamOptions::Mode::kAuto;
   std::vector<std::uint32_t> packets, singles;
-  packets.reserve(groups * width);
+  packets.reserve(n + width);
   for (std::size_t g = 0; g < groups; ++g) {
     std::uint32_t lanes[16];
-    for (std::uint32_t i = 0; i < width; ++i) lanes[i] = lane(g, i);
+    bool any = false;
+    for (std::uint32_t i = 0; i < width; ++i)
+      lanes[i] = lane(g, i), any = any || lanes[i] != simd::kAbsentLane;
+    if (!any) continue;  // a tile past the stream's end (an image wider than the stream)
     if (!onlyCoherent || sameOctant(rays, lanes, width)) {
       packets.insert(packets.end(), lanes, lanes + width);
       continue;
