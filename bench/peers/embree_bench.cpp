@@ -59,23 +59,30 @@ const EmbreeScene& committedScene() {
   return s;
 }
 
+// Ray i of the stream as Embree takes it (t in [0, inf), no hit yet), and an answer as ours.
+RTCRayHit rayHit(const RayStream& rays, std::size_t i) {
+  RTCRayHit rh{};
+  rh.ray.org_x = rays.origin(0)[i], rh.ray.org_y = rays.origin(1)[i];
+  rh.ray.org_z = rays.origin(2)[i];
+  rh.ray.dir_x = rays.direction(0)[i], rh.ray.dir_y = rays.direction(1)[i];
+  rh.ray.dir_z = rays.direction(2)[i];
+  rh.ray.tnear = 0, rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = ~0u;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+MeshHit meshHit(const RTCRayHit& rh) {
+  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? MeshHit{} : MeshHit{rh.hit.primID, rh.ray.tfar};
+}
+
 void intersect1(const RTCScene scene, const RayStream& rays, std::vector<MeshHit>& hits) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t j = 0; j < std::int64_t(rays.size()); ++j) {
-    const std::size_t i = std::size_t(j);
-    RTCRayHit rh{};
-    rh.ray.org_x = rays.origin(0)[i], rh.ray.org_y = rays.origin(1)[i];
-    rh.ray.org_z = rays.origin(2)[i];
-    rh.ray.dir_x = rays.direction(0)[i], rh.ray.dir_y = rays.direction(1)[i];
-    rh.ray.dir_z = rays.direction(2)[i];
-    rh.ray.tnear = 0, rh.ray.tfar = std::numeric_limits<float>::infinity();
-    rh.ray.mask = ~0u;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rh = rayHit(rays, std::size_t(j));
     rtcIntersect1(scene, &context, &rh);
-    hits[i] =
-        rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? MeshHit{} : MeshHit{rh.hit.primID, rh.ray.tfar};
+    hits[std::size_t(j)] = meshHit(rh);
   }
 }
 
@@ -89,27 +96,11 @@ void intersect1M(const RTCScene scene, const RayStream& rays, std::vector<MeshHi
   const std::int64_t n = std::int64_t(rays.size());
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t begin = 0; begin < n; begin += kCall) {
+    RTCRayHit stream[kCall];
     const std::int64_t count = std::min(kCall, n - begin);
-    std::vector<RTCRayHit> stream(static_cast<std::size_t>(count));
-    for (std::int64_t k = 0; k < count; ++k) {
-      const std::size_t i = std::size_t(begin + k);
-      RTCRayHit& rh = stream[std::size_t(k)];
-      rh = RTCRayHit{};
-      rh.ray.org_x = rays.origin(0)[i], rh.ray.org_y = rays.origin(1)[i];
-      rh.ray.org_z = rays.origin(2)[i];
-      rh.ray.dir_x = rays.direction(0)[i], rh.ray.dir_y = rays.direction(1)[i];
-      rh.ray.dir_z = rays.direction(2)[i];
-      rh.ray.tnear = 0, rh.ray.tfar = std::numeric_limits<float>::infinity();
-      rh.ray.mask = ~0u;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    }
-    rtcIntersect1M(scene, &context, stream.data(), unsigned(count), sizeof(RTCRayHit));
-    for (std::int64_t k = 0; k < count; ++k) {
-      const RTCRayHit& rh = stream[std::size_t(k)];
-      hits[std::size_t(begin + k)] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID
-                                         ? MeshHit{}
-                                         : MeshHit{rh.hit.primID, rh.ray.tfar};
-    }
+    for (std::int64_t k = 0; k < count; ++k) stream[k] = rayHit(rays, std::size_t(begin + k));
+    rtcIntersect1M(scene, &context, stream, unsigned(count), sizeof(RTCRayHit));
+    for (std::int64_t k = 0; k < count; ++k) hits[std::size_t(begin + k)] = meshHit(stream[k]);
   }
 }
 
