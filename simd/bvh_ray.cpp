@@ -142,12 +142,17 @@ void traverse(const MeshView& mesh, const detail::TraversalRay& ray, Sink& sink)
   }
 }
 
+// Ray i of `rays` traced alone: its closest hit.
+MeshHit closestHit(const MeshView& mesh, const RaysView& rays, std::size_t i) {
+  const detail::TraversalRay ray = rayAt(rays, i);
+  Closest closest(ray.tMax);
+  traverse(mesh, ray, closest);
+  return closest.result();
+}
+
 void MeshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
   for (std::size_t i = 0; i < rays.count; ++i) {
-    const detail::TraversalRay ray = rayAt(rays, i);
-    Closest closest(ray.tMax);
-    traverse(mesh, ray, closest);
-    const MeshHit h = closest.result();
+    const MeshHit h = closestHit(mesh, rays, i);
     id[i] = h.id, t[i] = h.t;
   }
 }
@@ -215,12 +220,7 @@ void MeshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std
 
 void MeshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
                        std::size_t n, MeshHit* out) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const detail::TraversalRay ray = rayAt(rays, index[i]);
-    Closest closest(ray.tMax);
-    traverse(mesh, ray, closest);
-    out[index[i]] = closest.result();
-  }
+  for (std::size_t i = 0; i < n; ++i) out[index[i]] = closestHit(mesh, rays, index[i]);
 }
 
 void MeshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
