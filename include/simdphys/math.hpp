@@ -66,10 +66,13 @@ inline constexpr T kGeometryTolerance = T(16) * std::numeric_limits<T>::epsilon(
 
 // The supported range (docs/architecture.md), the same in float and double. Coordinates, sizes
 // and distances are at most kMaxCoordinate in magnitude, so a squared length of a difference of
-// two points (at most 3 * (2e18)^2 = 1.2e37) stays finite in float. Scales that divide or
-// normalise (direction and normal lengths, transform scale factors, projection extents) are at
-// least kMinScale, so their squares (1e-36) are normal floats. Values enter through validate(),
-// the streams, meshes, transforms and files, which reject anything outside with an Error.
+// two points (at most 3 * (2e18)^2 = 1.2e37) stays finite in float; computations inside the range
+// must not overflow (products of two squared lengths would: they are scaled first). Scale
+// factors that get inverted (transform scales, projection extents) lie in [kMinScale,
+// kMaxCoordinate], so their inverses stay in range and their squares (1e-36) are normal floats.
+// Directions and normals that the library normalises may have any finite non-zero length (they
+// are scaled before their length is taken). Values enter through validate(), the streams,
+// meshes, transforms and files, which reject anything outside the range with an Error.
 inline constexpr float kMaxCoordinate = 1e18f;
 inline constexpr float kMinScale = 1e-18f;
 
