@@ -32,6 +32,9 @@ class OverlapExpander {
           hn::RebindMask(du_, overlap_(d_, n.minX, n.minY, n.minZ, n.maxX, n.maxY, n.maxZ, h));
       if (hn::AllFalse(du_, hit)) continue;
       const auto child = hn::Load(du_, n.child + h);
+      // An empty slot's bounds fail every finite query, but it must pass none: its reference
+      // would be read as a leaf.
+      hit = hn::AndNot(hn::Eq(child, hn::Set(du_, BvhNode::kEmpty)), hit);
       const auto leaf = hn::RebindMask(du_, hn::Lt(hn::BitCast(di_, child), hn::Zero(di_)));
       const int pushed = top;
       top += int(compressStore32(du_, child, hn::AndNot(leaf, hit), stack + top));

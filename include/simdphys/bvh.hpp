@@ -21,8 +21,9 @@ namespace simdphys {
 struct alignas(64) BvhNode {
   static constexpr int kWidth = 8;
   // child[k]: the index of a child node, or kLeaf | (count - 1) << kCountShift | first for a
-  // leaf of `count` primitives starting at `first`. Unused slots have empty bounds
-  // (min = +inf, max = -inf), which no test passes.
+  // leaf of `count` primitives starting at `first`. Unused slots are kEmpty with empty
+  // bounds (min = +inf, max = -inf): no finite test passes them, and the box traversals skip
+  // kEmpty whatever the query.
   static constexpr std::uint32_t kLeaf = 1u << 31;
   static constexpr int kCountShift = 27;
   static constexpr std::uint32_t kFirstMask = (1u << kCountShift) - 1;

@@ -23,7 +23,8 @@ struct Mesh {
     const auto& t = triangles[i];
     return {vertices[t[0]], vertices[t[1]], vertices[t[2]]};
   }
-  // Throws Error naming `where` and the element: a vertex not finite, an index out of range, or a
+  // Throws Error naming `where` and the element: a vertex not finite or outside the supported
+  // range (|coordinate| <= kMaxCoordinate, math.hpp), an index out of range, or a
   // degenerate triangle (its normal, computed in double, exactly zero: the raycast never hits it,
   // so it could only hide mistakes).
   void validate(std::string_view where) const;

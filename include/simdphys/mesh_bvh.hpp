@@ -112,7 +112,8 @@ class MeshBvh {
   MeshHit linecast(const Segment& segment) const;
   bool linetest(const Segment& segment) const;
 
-  // Ids of the triangles the shape intersects (intersect.hpp's tests, closed), ascending.
+  // Ids of the triangles the shape intersects (intersect.hpp's tests, closed), ascending. Throws
+  // Error on an invalid shape or one outside the supported range (math.hpp).
   std::vector<std::uint32_t> overlapping(const Sphere& sphere) const;
   std::vector<std::uint32_t> overlapping(const Aabb& box) const;
   std::vector<std::uint32_t> overlapping(const Obb& box) const;
@@ -125,7 +126,7 @@ class MeshBvh {
  private:
   void fillBlocks();
   template <class Shape>
-  std::vector<std::uint32_t> overlappingShape(const Shape& shape, const Aabb& bounds) const;
+  std::vector<std::uint32_t> overlappingShape(const Shape& shape, const char* where) const;
 
   Mesh mesh_;
   Bvh bvh_;

@@ -29,8 +29,13 @@ struct Grid {
   int ny = 1, nz = 1;
   float originY = 0, originZ = 0, scaleY = 0, scaleZ = 0;
   // Monotonic in the coordinate, so the cell of a point inside a box lies within the box's cells.
-  int cellY(float y) const { return std::clamp(int((y - originY) * scaleY), 0, ny - 1); }
-  int cellZ(float z) const { return std::clamp(int((z - originZ) * scaleZ), 0, nz - 1); }
+  // Clamped in float before the conversion: the offset overflows to inf for boxes spanning more
+  // than FLT_MAX, and converting a float beyond int's range is undefined.
+  static int cell(float offset, float scale, int n) {
+    return int(std::clamp(offset * scale, 0.0f, float(n - 1)));
+  }
+  int cellY(float y) const { return cell(y - originY, scaleY, ny); }
+  int cellZ(float z) const { return cell(z - originZ, scaleZ, nz); }
 };
 
 Grid chooseGrid(const BoxStream& b, PairMethod method) {
@@ -42,7 +47,7 @@ Grid chooseGrid(const BoxStream& b, PairMethod method) {
   for (std::size_t i = 0; i < n; ++i) {
     loY = std::min(loY, b.minY()[i]), hiY = std::max(hiY, b.maxY()[i]);
     loZ = std::min(loZ, b.minZ()[i]), hiZ = std::max(hiZ, b.maxZ()[i]);
-    sizeY += b.maxY()[i] - b.minY()[i], sizeZ += b.maxZ()[i] - b.minZ()[i];
+    sizeY += double(b.maxY()[i]) - b.minY()[i], sizeZ += double(b.maxZ()[i]) - b.minZ()[i];
   }
   const double perAxis = std::sqrt(double(n) / kBoxesPerCell);
   auto cells = [&](double extent, double meanSize) {

@@ -11,8 +11,10 @@ template <class Visit>
 auto overlapExpander(const Aabb& q, Visit visit) {
   return [&q, visit](const BvhNode& n, std::uint32_t* stack, int top) mutable {
     for (int k = 0; k < BvhNode::kWidth; ++k) {
-      bool hit = n.minX[k] <= q.max.x() && q.min.x() <= n.maxX[k] && n.minY[k] <= q.max.y() &&
-                 q.min.y() <= n.maxY[k] && n.minZ[k] <= q.max.z() && q.min.z() <= n.maxZ[k];
+      // An empty slot passes no query, not even one with infinite bounds.
+      bool hit = n.child[k] != BvhNode::kEmpty && n.minX[k] <= q.max.x() &&
+                 q.min.x() <= n.maxX[k] && n.minY[k] <= q.max.y() && q.min.y() <= n.maxY[k] &&
+                 n.minZ[k] <= q.max.z() && q.min.z() <= n.maxZ[k];
       if (!hit) continue;
       if (BvhNode::isLeaf(n.child[k]))
         visit(BvhNode::leafFirst(n.child[k]));

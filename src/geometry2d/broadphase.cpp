@@ -27,8 +27,10 @@ constexpr double kMinBandInRects = 16;
 struct Bands {
   int count = 1;
   float origin = 0, scale = 0;
-  // Monotonic in y, so a rectangle's bands are those from band(minY) to band(maxY).
-  int band(float y) const { return std::clamp(int((y - origin) * scale), 0, count - 1); }
+  // Monotonic in y, so a rectangle's bands are those from band(minY) to band(maxY). Clamped in
+  // float before the conversion: the offset overflows to inf for rectangles spanning more than
+  // FLT_MAX, and converting a float beyond int's range is undefined.
+  int band(float y) const { return int(std::clamp((y - origin) * scale, 0.0f, float(count - 1))); }
 };
 
 Bands chooseBands(const RectStream& r, bool banded) {
@@ -39,7 +41,7 @@ Bands chooseBands(const RectStream& r, bool banded) {
   double height = 0;
   for (std::size_t i = 0; i < n; ++i) {
     lo = std::min(lo, r.minY()[i]), hi = std::max(hi, r.maxY()[i]);
-    height += r.maxY()[i] - r.minY()[i];
+    height += double(r.maxY()[i]) - r.minY()[i];
   }
   const double extent = double(hi) - lo, meanHeight = height / double(n);
   double count = double(n) / kRectsPerBand;

@@ -1,6 +1,7 @@
 // Mesh validation and the procedural meshes.
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include "simdphys/geometry3d/raycast.hpp"  // triangleNormalWide: the raycast's degeneracy test
@@ -9,10 +10,17 @@
 namespace simdphys {
 
 void Mesh::validate(std::string_view where) const {
-  for (std::size_t i = 0; i < vertices.size(); ++i)
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
     if (!vertices[i].allFinite())
       detail::requireFiniteField(vertices[i], std::string(where) + ": vertex " + std::to_string(i),
                                  "position");
+    if (vertices[i].cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      std::ostringstream msg;
+      msg << where << ": vertex " << i << ": position (" << vertices[i].transpose()
+          << ") is outside the supported range (|coordinate| <= " << kMaxCoordinate << ")";
+      throw Error(msg.str());
+    }
+  }
   const std::size_t n = vertices.size();
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const auto& t = triangles[i];

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
@@ -94,9 +95,11 @@ void overlappingLeaves(const Bvh& bvh, const Aabb& q, Visit visit) {
   traverseBvh(bvh.nodes().data(), bvh.nodes().size(),
               [&](const BvhNode& n, std::uint32_t* stack, int top) {
                 for (int k = 0; k < BvhNode::kWidth; ++k) {
-                  const bool hit = n.minX[k] <= q.max.x() && q.min.x() <= n.maxX[k] &&
-                                   n.minY[k] <= q.max.y() && q.min.y() <= n.maxY[k] &&
-                                   n.minZ[k] <= q.max.z() && q.min.z() <= n.maxZ[k];
+                  // An empty slot passes no query, not even one with infinite bounds.
+                  const bool hit = n.child[k] != BvhNode::kEmpty && n.minX[k] <= q.max.x() &&
+                                   q.min.x() <= n.maxX[k] && n.minY[k] <= q.max.y() &&
+                                   q.min.y() <= n.maxY[k] && n.minZ[k] <= q.max.z() &&
+                                   q.min.z() <= n.maxZ[k];
                   if (!hit) continue;
                   const std::uint32_t c = n.child[k];
                   if (BvhNode::isLeaf(c))
@@ -161,33 +164,7 @@ bool MeshBvh::occluded(const Ray& ray, float tMax) const {
   return hit != 0;
 }
 
-// ---- segments --------------------------------------------------------------------------------
-
-// raycast.hpp's linecast: the ray from start along end - start (not normalised) up to t = 1, then
-// t turned into a distance. A point-like segment crosses nothing.
-MeshHit MeshBvh::linecast(const Segment& s) const {
-  validate(s, "MeshBvh::linecast");
-  if (detail::rays::isPointSegment(s)) return {};
-  MeshHit h = raycast(Ray{s.start, s.direction()}, 1.0f);
-  if (h.hit()) h.t *= s.length();
-  return h;
-}
-
-// A crossing, or a triangle the segment touches in its plane (raycast.hpp's linetest), among the
-// triangles whose bounds meet the segment's.
-bool MeshBvh::linetest(const Segment& s) const {
-  validate(s, "MeshBvh::linetest");
-  if (!detail::rays::isPointSegment(s) && occluded(Ray{s.start, s.direction()}, 1.0f)) return true;
-  const Aabb box{s.start.cwiseMin(s.end), s.start.cwiseMax(s.end)};
-  bool found = false;
-  reference::overlappingLeaves(bvh_, box, [&](std::uint32_t first, std::uint32_t count) {
-    for (std::uint32_t i = 0; i < count && !found; ++i)
-      found = simdphys::linetest(mesh_.triangle(bvh_.order()[first + i]), s);
-  });
-  return found;
-}
-
-// ---- overlap ---------------------------------------------------------------------------------
+// ---- query bounds ----------------------------------------------------------------------------
 
 namespace {
 Aabb boundsOf(const Sphere& s) {
@@ -198,17 +175,63 @@ Aabb boundsOf(const Obb& b) {
   const Vec3f reach = b.axes.cwiseAbs() * b.halfExtents;
   return {b.center - reach, b.center + reach};
 }
+Aabb boundsOf(const Segment& s) { return {s.start.cwiseMin(s.end), s.start.cwiseMax(s.end)}; }
 Aabb boundsOf(const Triangle& t) {
   return {t.a.cwiseMin(t.b).cwiseMin(t.c), t.a.cwiseMax(t.b).cwiseMax(t.c)};
 }
+
+// The bounds of any shape in the supported range lie within 4 kMaxCoordinate (an OBB's centre
+// plus three half extents); a query beyond is rejected, so the widened box below stays finite.
+constexpr float kMaxQueryBound = 4 * kMaxCoordinate;
+
+void requireInReach(const Aabb& bounds, const char* where) {
+  const float reach = std::max(bounds.min.cwiseAbs().maxCoeff(), bounds.max.cwiseAbs().maxCoeff());
+  if (reach <= kMaxQueryBound) return;
+  std::ostringstream msg;
+  msg << where << ": the query reaches " << reach
+      << ", outside the supported range (|coordinate| and sizes <= " << kMaxCoordinate << ")";
+  throw Error(msg.str());
+}
 }  // namespace
+
+// ---- segments --------------------------------------------------------------------------------
+
+// raycast.hpp's linecast: the ray from start along end - start (not normalised) up to t = 1, then
+// t turned into a distance. A point-like segment crosses nothing.
+MeshHit MeshBvh::linecast(const Segment& s) const {
+  validate(s, "MeshBvh::linecast");
+  requireInReach(boundsOf(s), "MeshBvh::linecast");
+  if (detail::rays::isPointSegment(s)) return {};
+  MeshHit h = raycast(Ray{s.start, s.direction()}, 1.0f);
+  if (h.hit()) h.t *= s.length();
+  return h;
+}
+
+// A crossing, or a triangle the segment touches in its plane (raycast.hpp's linetest), among the
+// triangles whose bounds meet the segment's.
+bool MeshBvh::linetest(const Segment& s) const {
+  validate(s, "MeshBvh::linetest");
+  requireInReach(boundsOf(s), "MeshBvh::linetest");
+  if (!detail::rays::isPointSegment(s) && occluded(Ray{s.start, s.direction()}, 1.0f)) return true;
+  bool found = false;
+  reference::overlappingLeaves(bvh_, boundsOf(s), [&](std::uint32_t first, std::uint32_t count) {
+    for (std::uint32_t i = 0; i < count && !found; ++i)
+      found = simdphys::linetest(mesh_.triangle(bvh_.order()[first + i]), s);
+  });
+  return found;
+}
+
+// ---- overlap ---------------------------------------------------------------------------------
 
 // The tests of intersect.hpp accept shapes up to kGeometryTolerance * scale apart, scale bounded
 // by the shapes' sizes and their distance; the query's bounds are widened by several times that
 // for the largest scale in play (the query, the mesh's extent and its longest edge), so the tree
 // never culls a triangle the exact test would accept.
 template <class Shape>
-std::vector<std::uint32_t> MeshBvh::overlappingShape(const Shape& shape, const Aabb& bounds) const {
+std::vector<std::uint32_t> MeshBvh::overlappingShape(const Shape& shape, const char* where) const {
+  validate(shape, where);
+  const Aabb bounds = boundsOf(shape);
+  requireInReach(bounds, where);
   std::vector<std::uint32_t> ids;
   if (mesh_.size() == 0) return ids;
   const float scale = (bounds.max - bounds.min).maxCoeff() + bounds.min.cwiseAbs().maxCoeff() +
@@ -226,20 +249,16 @@ std::vector<std::uint32_t> MeshBvh::overlappingShape(const Shape& shape, const A
 }
 
 std::vector<std::uint32_t> MeshBvh::overlapping(const Sphere& s) const {
-  validate(s, "MeshBvh::overlapping(Sphere)");
-  return overlappingShape(s, boundsOf(s));
+  return overlappingShape(s, "MeshBvh::overlapping(Sphere)");
 }
 std::vector<std::uint32_t> MeshBvh::overlapping(const Aabb& b) const {
-  validate(b, "MeshBvh::overlapping(Aabb)");
-  return overlappingShape(b, boundsOf(b));
+  return overlappingShape(b, "MeshBvh::overlapping(Aabb)");
 }
 std::vector<std::uint32_t> MeshBvh::overlapping(const Obb& b) const {
-  validate(b, "MeshBvh::overlapping(Obb)");
-  return overlappingShape(b, boundsOf(b));
+  return overlappingShape(b, "MeshBvh::overlapping(Obb)");
 }
 std::vector<std::uint32_t> MeshBvh::overlapping(const Triangle& t) const {
-  validate(t, "MeshBvh::overlapping(Triangle)");
-  return overlappingShape(t, boundsOf(t));
+  return overlappingShape(t, "MeshBvh::overlapping(Triangle)");
 }
 
 // ---- build and refit -------------------------------------------------------------------------

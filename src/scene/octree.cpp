@@ -27,10 +27,13 @@ bool contains(const Aabb& outer, const Aabb& inner) {
 
 Aabb emptyBox() { return {Vec3f::Constant(kInf), Vec3f::Constant(-kInf)}; }
 
+// (a + b) / 2 as a sum of halves, which cannot overflow (a + b can, past FLT_MAX).
+Vec3f halfSum(const Vec3f& a, const Vec3f& b) { return a * 0.5f + b * 0.5f; }
+
 // Octant k of a cell: bit 0 picks the upper half in x, bit 1 in y, bit 2 in z. The halves share
 // the midpoint exactly, so the octants tile the cell without gaps.
 Aabb octant(const Aabb& cell, int k) {
-  const Vec3f mid = cell.center();
+  const Vec3f mid = halfSum(cell.min, cell.max);
   Aabb o = cell;
   for (int a = 0; a < 3; ++a) (k >> a & 1 ? o.min[a] : o.max[a]) = mid[a];
   return o;
@@ -55,8 +58,9 @@ void Octree::build(const BoundsStream& boxes, const OctreeOptions& options) {
   }
   if (boxes.size() == 0) all = {Vec3f::Zero(), Vec3f::Zero()};
   // A cube, so that octants stay cubes; its half side a little over the largest half extent.
-  const Vec3f c = all.center();
-  const float half = (all.max - all.min).maxCoeff() * 0.5f * (1 + 1e-5f) + 1e-30f;
+  // Both from halves, so they stay finite whatever the span of the boxes.
+  const Vec3f c = halfSum(all.min, all.max);
+  const float half = (all.max * 0.5f - all.min * 0.5f).maxCoeff() * (1 + 1e-5f) + 1e-30f;
   Node root;
   root.cell = {c.array() - half, c.array() + half};
   nodes_.push_back(std::move(root));
