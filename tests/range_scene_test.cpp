@@ -14,6 +14,7 @@
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/mesh_bvh.hpp"
 #include "simdphys/scene/octree.hpp"
+#include "simdphys/scene/scene.hpp"
 
 namespace simdphys {
 namespace {
@@ -238,6 +239,178 @@ TEST_P(RangeScene, OctreeAtTheRangeEdgesEqualsBruteForce) {
       ASSERT_EQ(want.size(), list.size());
     }
     ASSERT_EQ(tree.query(b), want) << q;
+  }
+}
+
+Mat4f moved(const Vec3f& t) { return transform(Vec3f::Ones(), Mat3f::Identity(), t); }
+
+// ---- 5. bad arguments --------------------------------------------------------------------------
+
+// A stream's directions may have any non-zero length, as in MeshBvh: t is in units of the
+// direction, on every kind of model, so a ray of direction 2u hits at half the t of u.
+TEST_P(RangeScene, SceneStreamRaycastHonoursTheDirectionUnits) {
+  Scene scene;
+  scene.add({Sphere{{0, 0, 0}, 1}, moved(Vec3f(10, 0, 0))});
+  scene.add({Aabb{{-1, -1, -1}, {1, 1, 1}}, moved(Vec3f(0, 10, 0))});
+  scene.add({Obb{{0, 0, 0}, {1, 1, 1}}, moved(Vec3f(0, 0, 10))});
+  scene.add({std::make_shared<const MeshBvh>(boxMesh({{-1, -1, -1}, {1, 1, 1}})),
+             moved(Vec3f(-10, 0, 0))});
+  scene.update();
+  // A mesh at the origin, unscaled, that most rays reach: the stream is cast as it is.
+  Scene terrain;
+  terrain.add({std::make_shared<const MeshBvh>(boxMesh({{-1, -1, -1}, {1, 1, 1}}))});
+  terrain.update();
+  const Vec3f axes[4] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}};
+  for (float length : {0.5f, 1.0f, 4.0f}) {
+    RayStream rays;
+    for (const Vec3f& a : axes) rays.push(Ray{a * 20, -a * length});  // towards the mesh
+    std::vector<ModelHit> toMesh(rays.size());
+    terrain.raycast(rays, toMesh);
+    for (std::uint32_t m = 0; m < 4; ++m) {
+      ASSERT_EQ(toMesh[m].model, 0u);
+      EXPECT_EQ(toMesh[m].t, 19 / length) << "axis " << m << ", length " << length;
+    }
+    rays = RayStream();
+    for (const Vec3f& a : axes) rays.push(Ray{{0, 0, 0}, a * length});
+    std::vector<ModelHit> hits(rays.size());
+    scene.raycast(rays, hits);
+    for (std::uint32_t m = 0; m < 4; ++m) {
+      ASSERT_EQ(hits[m].model, m) << length;
+      // Each model's near face is 9 from the origin: t = 9 / length (exact: length is a power
+      // of 2), the point on the face.
+      EXPECT_EQ(hits[m].t, 9 / length) << "model " << m << ", length " << length;
+      EXPECT_EQ(hits[m].point, axes[m] * 9) << "model " << m << ", length " << length;
+    }
+  }
+}
+
+// A camera's frustum at the origin looking down -z, and spheres around it, some in view.
+Mat4f cameraMatrix() {
+  return perspective(1.0f, 1.5f, 0.5f, 100.0f) *
+         lookAt(Vec3f(0, 0, 0), Vec3f(0.1f, -0.2f, -1), Vec3f(0, 1, 0));
+}
+SphereStream spheresAround() {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> pos(-120, 120), radius(0.1f, 3);
+  SphereStream s;
+  for (int i = 0; i < 5000; ++i) s.push({{pos(rng), pos(rng), pos(rng)}, radius(rng)});
+  return s;
+}
+
+TEST_P(RangeScene, CullRejectsAnInvalidFrustum) {
+  const Frustum good = Frustum::fromMatrix(cameraMatrix());
+  const SphereStream spheres = spheresAround();
+  BoundsStream boxes;
+  for (std::size_t i = 0; i < spheres.size(); ++i)
+    boxes.push(spheres[i].center, Vec3f::Constant(spheres[i].radius));
+  const Octree octree(boxes);
+  const Bvh bvh([&] {
+    BoxStream b;
+    for (std::size_t i = 0; i < boxes.size(); ++i) b.push(boxes[i]);
+    return b;
+  }());
+  Frustum nanNormal = good, infD = good, longNormal = good;
+  nanNormal.planes[2].normal.x() = std::numeric_limits<float>::quiet_NaN();
+  infD.planes[4].d = std::numeric_limits<float>::infinity();
+  longNormal.planes[1].normal *= 2;  // the tests read n.p + d as a distance: n must be unit
+  std::vector<std::uint32_t> visible{7};
+  test::expectError([&] { cull(nanNormal, spheres, visible); },
+                    "cull(SphereStream): frustum plane 2: normal.x");
+  test::expectError([&] { cull(infD, boxes, visible); }, "cull(BoundsStream): frustum plane 4: d");
+  test::expectError([&] { cull(longNormal, spheres, visible); }, "frustum plane 1: normal");
+  test::expectError([&] { octree.cull(nanNormal, visible); }, "Octree::cull: frustum plane 2");
+  test::expectError([&] { cull(infD, bvh, boxes, visible); }, "cull(Bvh): frustum plane 4");
+  EXPECT_EQ(visible, std::vector<std::uint32_t>{7});  // untouched
+  Scene scene;
+  scene.add({Sphere{{0, 0, -5}, 1}});
+  scene.update();
+  for (SceneIndex via : {SceneIndex::kFlat, SceneIndex::kOctree, SceneIndex::kBvh})
+    test::expectError([&] { scene.cull(nanNormal, visible, via); }, "frustum plane 2");
+}
+
+// Issue 11: a valid matrix scaled by 1e20 or 1e-25 was rejected (a plane normal's length over-
+// or underflowed). The planes are scale-free: the same objects are culled.
+TEST_P(RangeScene, FrustumFromAScaledMatrixCullsTheSame) {
+  const SphereStream spheres = spheresAround();
+  std::vector<std::uint32_t> want, got;
+  cull(Frustum::fromMatrix(cameraMatrix()), spheres, want);
+  ASSERT_GT(want.size(), 10u);
+  ASSERT_LT(want.size(), spheres.size() / 2);
+  for (float scale : {1e20f, 1e-25f, 1e30f, 1e-30f}) {
+    const Mat4f scaled = cameraMatrix() * scale;
+    cull(Frustum::fromMatrix(scaled), spheres, got);
+    EXPECT_EQ(got, want) << scale;
+  }
+}
+
+TEST(RangeCamera, ProjectionsRejectParametersGivingANonFiniteMatrix) {
+  test::expectError([] { perspective(1.0f, 1e-40f, 0.1f, 10.0f); }, "perspective: fovY 1");
+  test::expectError([] { perspective(1e-39f, 1.0f, 0.1f, 10.0f); }, "non-finite or vanishing");
+  test::expectError([] { orthographic(-FLT_MAX, FLT_MAX, -1.0f, 1.0f, 0.1f, 10.0f); },
+                    "orthographic: left");
+  test::expectError([] { orthographic(0.0f, 1e-40f, -1.0f, 1.0f, 0.1f, 10.0f); },
+                    "non-finite or vanishing");
+  const Vec3f far = Vec3f::Constant(0.9f * FLT_MAX);
+  test::expectError([&] { lookAt(far, Vec3f::Zero(), Vec3f::UnitY()); }, "lookAt: eye");
+  // In double the same parameters are fine.
+  EXPECT_TRUE(perspective(1.0, 1e-40, 0.1, 10.0).allFinite());
+  // And the range's edges in float.
+  EXPECT_TRUE(orthographic(-kRange, kRange, -kRange, kRange, -kRange, kRange).allFinite());
+  EXPECT_TRUE(
+      lookAt(Vec3f::Constant(kRange), Vec3f::Constant(-kRange), Vec3f::UnitY()).allFinite());
+}
+
+TEST(RangeScene, ModelTransformsOutsideTheRangeAreRejected) {
+  Scene scene;
+  const auto scaled = [](float s) {
+    return transform(Vec3f(1, s, 1), Mat3f::Identity(), Vec3f::Zero());
+  };
+  test::expectError(
+      [&] {
+        scene.add({Sphere{{0, 0, 0}, 1}, scaled(1e-39f)});
+      },
+      "model 0: transform's scale along axis 1 is");
+  test::expectError([&] { scene.add({Sphere{{0, 0, 0}, 1}, scaled(1e-19f)}); }, "axis 1");
+  test::expectError([&] { scene.add({Sphere{{0, 0, 0}, 1}, scaled(2e18f)}); }, "axis 1");
+  test::expectError(
+      [&] {
+        scene.add({Sphere{{0, 0, 0}, 1}, moved(Vec3f(0, 0, -2e18f))});
+      },
+      "model 0: transform's translation z");
+  EXPECT_EQ(scene.size(), 0u);
+  // The edges of the range are accepted, and a model scaled by kMinScale is hit.
+  scene.add({Sphere{{0, 0, 0}, 1e18f}, scaled(kMinScale)});
+  scene.add({Sphere{{0, 0, 0}, 1}, moved(Vec3f(0, 0, -kRange))});
+  scene.update();
+  // The first model is a 2e18 x 2 x 2e18 ellipsoid: a ray down -y from y = 5 meets it at y = 1.
+  const ModelHit h = scene.raycast(Ray{{0, 5, 0}, {0, -1, 0}});
+  EXPECT_EQ(h.model, 0u);
+  // Within a few roundings of the scaled hit (the radius 1e18 times 1e-18 is 1 to 1 ulp; the
+  // ray's t through the inverse transform adds a few more): 8 ulp of 4.
+  EXPECT_NEAR(h.t, 4.0f, 8 * 4 * FLT_EPSILON);
+}
+
+// ---- 7. scene queries with far-apart shapes
+// ---------------------------------------------------------
+
+TEST_P(RangeScene, SceneQueriesAcrossTheRange) {
+  Scene scene;
+  const float edge = kRange - 1e12f;  // unit spheres just inside the range, 2e18 apart
+  scene.add({Sphere{{0, 0, 0}, 1}, moved(Vec3f(-edge, 0, 0))});
+  scene.add({Sphere{{0, 0, 0}, 1}, moved(Vec3f(edge, 0, 0))});
+  scene.add({Sphere{{0, 0, 0}, 1}, moved(Vec3f(0, -edge, edge))});
+  scene.update();
+  for (SceneIndex via : {SceneIndex::kFlat, SceneIndex::kOctree, SceneIndex::kBvh}) {
+    SCOPED_TRACE(int(via));
+    EXPECT_EQ(scene.query(Sphere{{-edge, 0, 0}, 2}, via), std::vector<std::uint32_t>{0});
+    EXPECT_EQ(scene.query(Sphere{{edge, 0, 0}, 2}, via), std::vector<std::uint32_t>{1});
+    EXPECT_EQ(scene.query(Aabb{{edge - 2, -2, -2}, {edge + 2, 2, 2}}, via),
+              std::vector<std::uint32_t>{1});
+    EXPECT_EQ(scene.query(Sphere{{0, 0, 0}, 1e17f}, via), std::vector<std::uint32_t>{});
+    const Aabb all{Vec3f::Constant(-kRange), Vec3f::Constant(kRange)};
+    EXPECT_EQ(scene.query(all, via), (std::vector<std::uint32_t>{0, 1, 2}));
+    test::expectError([&] { scene.query(Sphere{{0, 0, 0}, -1}, via); }, "Scene::query: radius");
+    test::expectError([&] { scene.query(Aabb{{1, 0, 0}, {0, 1, 1}}, via); }, "Scene::query: min.x");
   }
 }
 

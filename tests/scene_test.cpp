@@ -88,9 +88,10 @@ TEST(SceneModels, BadInputNamesWhatAndWhere) {
   expectError([&] { scene.setParent(a, 9); }, "model 9 is out of range");
   expectError([&] { scene.setTransform(7, Mat4f::Identity()); }, "model 7 is out of range");
   expectError([&] { scene.raycast({Vec3f::Zero(), Vec3f::UnitX()}); }, "call update() first");
-  // A world matrix can overflow though every local one is finite: named at update.
+  // A world matrix can leave the supported range though every local one is in it: named at
+  // update (scale 1e10 twice gives 1e20 > kMaxCoordinate).
   Scene deep;
-  const Mat4f huge = transform(Vec3f::Constant(1e30f), Mat3f::Identity(), Vec3f::Zero());
+  const Mat4f huge = transform(Vec3f::Constant(1e10f), Mat3f::Identity(), Vec3f::Zero());
   const auto p = deep.add({Sphere{Vec3f::Zero(), 1}, huge});
   deep.add({Sphere{Vec3f::Zero(), 1}, huge, p});
   expectError([&] { deep.update(); }, "model 1 (world)");

@@ -15,11 +15,13 @@
 #include <algorithm>
 #include <cmath>
 #include <concepts>
+#include <initializer_list>
 #include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "simdphys/core.hpp"
 
@@ -131,6 +133,19 @@ ColumnOf<D> normalized(const Eigen::MatrixBase<D>& v, const char* fn, const char
   const ColumnOf<D> s = rescaled(v, fn, name);
   return s / s.norm();
 }
+
+// A view or projection matrix must come out finite, and the entries that make it invertible
+// non-zero: parameters in range can still overflow or underflow one (aspect 1e-40 gives
+// f / aspect = inf, an extent of 1e-40 an inverse that overflows).
+template <class T>
+bool usableMatrix(const Mat4<T>& m, std::initializer_list<std::pair<int, int>> nonZero) {
+  bool ok = m.allFinite();
+  for (const auto& [row, col] : nonZero) ok = ok && m(row, col) != 0;
+  return ok;
+}
+inline constexpr char kUnusable[] =
+    ": the matrix would have a non-finite or vanishing entry (a parameter too large or too small "
+    "for the scalar type)";
 
 template <class T>
 void requireViewport(const Vec4<T>& viewport, const char* fn) {
@@ -366,7 +381,8 @@ Vec3<typename DM::Scalar> transformDirection(const Eigen::MatrixBase<DM>& matrix
 
 // World-to-view matrix of a camera at eye looking at target: target lands on the -z axis, up
 // (any length, not necessarily perpendicular to the view direction) appears as +y. Throws if an
-// input is non-finite, eye == target, up is zero or parallel to the view direction.
+// input is non-finite, eye == target, up is zero or parallel to the view direction, or eye is so
+// far out that the translation overflows.
 template <class DE, class DT, class DU>
 Mat4<typename DE::Scalar> lookAt(const Eigen::MatrixBase<DE>& eye,
                                  const Eigen::MatrixBase<DT>& target,
@@ -390,12 +406,16 @@ Mat4<typename DE::Scalar> lookAt(const Eigen::MatrixBase<DE>& eye,
   m << right.transpose(), -right.dot(e),   //
       trueUp.transpose(), -trueUp.dot(e),  //
       -forward.transpose(), forward.dot(e), 0, 0, 0, 1;
+  // The rotation is unit; only the translation (dot products with eye) can overflow.
+  if (!detail::usableMatrix(m, {}))
+    detail::fail("lookAt", std::string("eye is too far from the origin") + detail::kUnusable);
   return m;
 }
 
 // View-to-clip matrix (as glm::perspectiveRH_ZO): the view point at distance zNear in front of
 // the camera gets depth 0, at zFar depth 1; fovY is the full vertical field of view, aspect is
-// width / height. Throws unless 0 < fovY < pi, aspect > 0, 0 < zNear < zFar, all finite.
+// width / height. Throws unless 0 < fovY < pi, aspect > 0, 0 < zNear < zFar, all finite, and the
+// matrix's entries come out finite and non-zero (no aspect of 1e-40).
 template <std::floating_point T>
 Mat4<T> perspective(T fovY, detail::NoDeduce<T> aspect, detail::NoDeduce<T> zNear,
                     detail::NoDeduce<T> zFar) {
@@ -415,12 +435,17 @@ Mat4<T> perspective(T fovY, detail::NoDeduce<T> aspect, detail::NoDeduce<T> zNea
   m(2, 2) = zFar / (zNear - zFar);
   m(2, 3) = zNear * m(2, 2);  // = -zNear zFar / (zFar - zNear); makes depth(zNear) exactly 0
   m(3, 2) = -1;               // w = distance in front of the camera
+  if (!detail::usableMatrix(m, {{0, 0}, {1, 1}, {2, 2}, {2, 3}}))
+    detail::fail("perspective", "fovY " + detail::str(fovY) + ", aspect " + detail::str(aspect) +
+                                    ", zNear " + detail::str(zNear) + ", zFar " +
+                                    detail::str(zFar) + detail::kUnusable);
   return m;
 }
 
 // View-to-clip matrix of the box [left, right] x [bottom, top] x [-zFar, -zNear] (as
 // glm::orthoRH_ZO): the box maps onto [-1, 1]^2 x [0, 1]. Throws on a non-finite bound or an
-// empty range (right <= left, top <= bottom, zFar <= zNear); to mirror an axis, scale instead.
+// empty range (right <= left, top <= bottom, zFar <= zNear), or ranges whose matrix entries
+// overflow or vanish; to mirror an axis, scale instead.
 template <std::floating_point T>
 Mat4<T> orthographic(T left, detail::NoDeduce<T> right, detail::NoDeduce<T> bottom,
                      detail::NoDeduce<T> top, detail::NoDeduce<T> zNear, detail::NoDeduce<T> zFar) {
@@ -440,6 +465,11 @@ Mat4<T> orthographic(T left, detail::NoDeduce<T> right, detail::NoDeduce<T> bott
   m(0, 3) = -(right + left) / (right - left);
   m(1, 3) = -(top + bottom) / (top - bottom);
   m(2, 3) = -zNear / (zFar - zNear);
+  if (!detail::usableMatrix(m, {{0, 0}, {1, 1}, {2, 2}}))
+    detail::fail("orthographic", "left " + detail::str(left) + ", right " + detail::str(right) +
+                                     ", bottom " + detail::str(bottom) + ", top " +
+                                     detail::str(top) + ", zNear " + detail::str(zNear) +
+                                     ", zFar " + detail::str(zFar) + detail::kUnusable);
   return m;
 }
 

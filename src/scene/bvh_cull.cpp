@@ -29,6 +29,7 @@ void takeSubtree(std::span<const BvhNode> nodes, std::uint32_t n, std::vector<st
 
 std::size_t cull(const Frustum& f, const Bvh& bvh, const BoundsStream& boxes,
                  std::vector<std::uint32_t>& visible) {
+  validate(f, "cull(Bvh)");
   if (bvh.size() != boxes.size())
     throw Error("cull: the BVH indexes " + std::to_string(bvh.size()) + " boxes, the stream has " +
                 std::to_string(boxes.size()));

@@ -14,6 +14,7 @@ std::size_t compacted(std::size_t padded, std::vector<std::uint32_t>& visible, K
 }  // namespace
 
 std::size_t cull(const Frustum& f, const SphereStream& s, std::vector<std::uint32_t>& visible) {
+  validate(f, "cull(SphereStream)");
   if (referencePathActive())
     return reference::cullSpheres(f, s.x().view(), s.y().view(), s.z().view(), s.r().view(),
                                   visible);
@@ -22,6 +23,7 @@ std::size_t cull(const Frustum& f, const SphereStream& s, std::vector<std::uint3
 }
 
 std::size_t cull(const Frustum& f, const BoundsStream& b, std::vector<std::uint32_t>& visible) {
+  validate(f, "cull(BoundsStream)");
   if (referencePathActive())
     return reference::cullBoxes(f, b.cx().view(), b.cy().view(), b.cz().view(), b.ex().view(),
                                 b.ey().view(), b.ez().view(), visible);

@@ -64,6 +64,25 @@ void validateTransform(const Mat4f& m, std::string_view where) {
     throw Error(std::string(where) + ": transform is not affine (last row must be 0 0 0 1)");
   if (m.topLeftCorner<3, 3>().cast<double>().determinant() == 0)
     throw Error(std::string(where) + ": transform is singular (a zero scale?)");
+  // The supported range (math.hpp): each axis's scale factor (its column's length, in double)
+  // in [kMinScale, kMaxCoordinate], so the inverse's stays in range too, and the translation
+  // in range. A model scaled by 1e-39 would otherwise be accepted but never hit.
+  for (int col = 0; col < 3; ++col) {
+    const double scale = m.col(col).head<3>().cast<double>().norm();
+    if (!(scale >= kMinScale && scale <= kMaxCoordinate)) {
+      std::ostringstream msg;
+      msg << where << ": transform's scale along axis " << col << " is " << scale
+          << ", outside the supported range [" << kMinScale << ", " << kMaxCoordinate << "]";
+      throw Error(msg.str());
+    }
+    if (!(std::abs(m(col, 3)) <= kMaxCoordinate)) {
+      std::ostringstream msg;
+      msg << where << ": transform's translation "
+          << "xyz"[col] << " is " << m(col, 3)
+          << ", outside the supported range (|t| <= " << kMaxCoordinate << ")";
+      throw Error(msg.str());
+    }
+  }
 }
 
 ModelHit worldHit(const PlacedShape& placed, const Ray& ray, float t, const Vec3f& localNormal,

@@ -270,6 +270,7 @@ void Octree::cullRange(const Frustum& f, std::uint32_t begin, std::uint32_t end,
 }
 
 std::size_t Octree::cull(const Frustum& f, std::vector<std::uint32_t>& visible) const {
+  validate(f, "Octree::cull");
   std::vector<std::uint64_t> seen((boxes_.size() + 63) / 64, 0);
   std::vector<std::uint32_t> scratch, stack;
   if (!nodes_.empty()) stack.push_back(0);

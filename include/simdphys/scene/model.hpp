@@ -34,7 +34,8 @@ struct Model {
 // Where a ray meets a model, in world space.
 struct ModelHit {
   std::uint32_t model = kNoModel;
-  float t = std::numeric_limits<float>::infinity();  // world distance along the unit direction
+  // Along the ray, in units of its direction: the world distance for a unit direction.
+  float t = std::numeric_limits<float>::infinity();
   Vec3f point = Vec3f::Zero();
   Vec3f normal = Vec3f::Zero();     // unit, facing the ray
   std::uint32_t triangle = kNoHit;  // the mesh triangle hit; kNoHit for primitives
@@ -49,8 +50,10 @@ Aabb localBounds(const ModelShape& shape);
 // box despite rounding: structures prune with it and must never lose a model by an ulp.
 Aabb transformBounds(const Aabb& local, const Mat4f& world);
 
-// Throws Error naming `where` unless m is finite, affine (last row exactly 0 0 0 1) and
-// invertible (its 3x3 determinant, in double, is not zero).
+// Throws Error naming `where` unless m is finite, affine (last row exactly 0 0 0 1), invertible
+// (its 3x3 determinant, in double, is not zero) and in the supported range (math.hpp): each
+// column's length (the axis's scale factor) in [kMinScale, kMaxCoordinate], the translation's
+// components at most kMaxCoordinate in magnitude.
 void validateTransform(const Mat4f& m, std::string_view where);
 
 // A model placed in the world: its shape and the matrices both ways. What a scene keeps.

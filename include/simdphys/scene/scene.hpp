@@ -58,7 +58,8 @@ class Scene {
   // The closest model the ray (unit direction) hits with t in [0, tMax]; ties in t go to the
   // smaller model index. Through the BVH, nearest subtree first.
   ModelHit raycast(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
-  // The same for every ray of a stream (unit directions; each ray's tMax): model by model, the
+  // The same for every ray of a stream (each ray's tMax), whose directions may have any non-zero
+  // length as in MeshBvh: t is in units of the ray's direction. Model by model, the
   // rays that meet the model's world box are moved into its space as one RayStream, and a mesh
   // casts them all through MeshBvh's stream raycast. Suits many rays and few models (a frame).
   void raycast(const RayStream& rays, std::span<ModelHit> out) const;
