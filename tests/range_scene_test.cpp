@@ -62,7 +62,7 @@ std::vector<std::uint32_t> bruteOverlaps(const Mesh& m, const Shape& s) {
   return ids;
 }
 
-// ---- 1. mesh BVH overlap queries ---------------------------------------------------------------
+// ---- mesh BVH overlap queries -------------------------------------------------------------------
 
 // Issue 11's crash: a query box of +-FLT_MAX, or a sphere of radius 3e38, widened to infinity,
 // let empty slots pass and read them as leaves. Now such a query is out of range: an Error.
@@ -137,7 +137,7 @@ TEST_P(RangeScene, MeshOverlapAtTheRangeEdgesEqualsBruteForce) {
   }
 }
 
-// ---- 4. linecast across the range ---------------------------------------------------------------
+// ---- linecast across the range ------------------------------------------------------------------
 
 // A square in the plane x = 5e17 spanning the range in y and z; a segment across the whole range
 // in x meets it 1.5e18 from its start.
@@ -163,8 +163,7 @@ TEST_P(RangeScene, LinecastAcrossTheRange) {
   EXPECT_NEAR(d.t, want, 8 * want * FLT_EPSILON);
 }
 
-// ---- 2. broadphases over the whole range
-// -----------------------------------------------------------
+// ---- broadphases over the whole range -----------------------------------------------------------
 
 TEST_P(RangeScene, PairsOverTheWholeRangeEqualBruteForce) {
   RangeRandom r(11);
@@ -217,8 +216,7 @@ TEST_P(RangeScene, Pairs2dOverTheWholeRangeEqualBruteForce) {
   }
 }
 
-// ---- 3. the octree at the range's edges
-// -----------------------------------------------------------
+// ---- the octree at the range's edges ------------------------------------------------------------
 
 TEST_P(RangeScene, OctreeAtTheRangeEdgesEqualsBruteForce) {
   RangeRandom r(17);
@@ -244,7 +242,7 @@ TEST_P(RangeScene, OctreeAtTheRangeEdgesEqualsBruteForce) {
 
 Mat4f moved(const Vec3f& t) { return transform(Vec3f::Ones(), Mat3f::Identity(), t); }
 
-// ---- 5. bad arguments --------------------------------------------------------------------------
+// ---- bad arguments ------------------------------------------------------------------------------
 
 // A stream's directions may have any non-zero length, as in MeshBvh: t is in units of the
 // direction, on every kind of model, so a ray of direction 2u hits at half the t of u.
@@ -390,8 +388,7 @@ TEST(RangeScene, ModelTransformsOutsideTheRangeAreRejected) {
   EXPECT_NEAR(h.t, 4.0f, 8 * 4 * FLT_EPSILON);
 }
 
-// ---- 7. scene queries with far-apart shapes
-// ---------------------------------------------------------
+// ---- scene queries with far-apart shapes --------------------------------------------------------
 
 TEST_P(RangeScene, SceneQueriesAcrossTheRange) {
   Scene scene;
