@@ -2,6 +2,7 @@
 #include "simdphys/scene/octree.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "../reference/cull.hpp"
@@ -58,11 +59,14 @@ void Octree::build(const BoundsStream& boxes, const OctreeOptions& options) {
   }
   if (boxes.size() == 0) all = {Vec3f::Zero(), Vec3f::Zero()};
   // A cube, so that octants stay cubes; its half side a little over the largest half extent.
-  // Both from halves, so they stay finite whatever the span of the boxes.
+  // Centre and half side come from halves, which cannot overflow; the cube is cut to the float
+  // range, which it passes only around boxes spanning more than FLT_MAX (outside the supported
+  // range), so the octants' midpoints stay finite whatever the boxes.
   const Vec3f c = halfSum(all.min, all.max);
   const float half = (all.max * 0.5f - all.min * 0.5f).maxCoeff() * (1 + 1e-5f) + 1e-30f;
+  const float big = std::numeric_limits<float>::max();
   Node root;
-  root.cell = {c.array() - half, c.array() + half};
+  root.cell = {(c.array() - half).max(-big), (c.array() + half).min(big)};
   nodes_.push_back(std::move(root));
   for (std::uint32_t i = 0; i < boxes_.size(); ++i) {
     if (contains(nodes_[0].cell, boxes_[i]))
