@@ -1,5 +1,6 @@
 // Fuzz target: the 2D batch queries (geometry2d/batch.hpp) on streams decoded from the bytes (up
 // to 40 elements), each on every path against the reference path, exactly (index lists).
+#include <sstream>
 #include <vector>
 
 #include "simdphys/geometry2d/batch.hpp"
@@ -30,14 +31,25 @@ Stream streamOf(fuzz::Input& in, Make make) {
   return s;
 }
 
+std::string describe(const OrientedRect& r) {
+  std::ostringstream o;
+  o.precision(9);
+  o << "center (" << r.center.transpose() << ") half (" << r.halfExtents.transpose()
+    << ") rotation " << r.rotation;
+  return o.str();
+}
+
 template <class Query>
-void indices(const char* what, Query query) {
-  fuzz::sameOnEveryPath(what, [&] {
-    std::vector<std::uint32_t> out;
-    const std::size_t n = query(out);
-    fuzz::require(n == out.size(), std::string(what) + ": the count is not the list's size");
-    return out;
-  });
+void indices(const char* what, Query query, const std::function<std::string()>& context = {}) {
+  fuzz::sameOnEveryPath(
+      what,
+      [&] {
+        std::vector<std::uint32_t> out;
+        const std::size_t n = query(out);
+        fuzz::require(n == out.size(), std::string(what) + ": the count is not the list's size");
+        return out;
+      },
+      context);
 }
 
 }  // namespace
@@ -63,8 +75,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 2: {
         const auto s = streamOf<OrientedRectStream>(in, orientedRect);
         const OrientedRect q = orientedRect(in);
-        indices("overlapping(OrientedRect, OrientedRectStream)",
-                [&](auto& o) { return overlapping(q, s, o); });
+        indices(
+            "overlapping(OrientedRect, OrientedRectStream)",
+            [&](auto& o) { return overlapping(q, s, o); },
+            [&] {
+              std::string text = "\n  query: " + describe(q);
+              for (std::size_t i = 0; i < s.size(); ++i)
+                text += "\n  element " + std::to_string(i) + ": " + describe(s[i]);
+              std::vector<std::uint32_t> ids;
+              ScopedPath p("reference");
+              overlapping(q, s, ids);
+              text += "\n  reference:";
+              for (std::uint32_t id : ids) text += " " + std::to_string(id);
+              return text;
+            });
         break;
       }
       case 3: {

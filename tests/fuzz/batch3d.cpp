@@ -2,6 +2,7 @@
 // to 40 elements: more than one vector of every width, and a tail), each on every path against
 // the reference path, exactly: indices, counts, hit indices and the bits of t and of points.
 #include <optional>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -51,6 +52,37 @@ void indices(const char* what, Query query) {
     fuzz::require(n == out.size(), std::string(what) + ": the count is not the list's size");
     return out;
   });
+}
+
+// A ray query's input and the reference path's answer, for a finding's message.
+template <class Stream>
+std::string describe(const Ray& r, float tMax, const Stream& s) {
+  std::ostringstream o;
+  o.precision(9);
+  o << "\n  ray (" << r.origin.transpose() << ") dir (" << r.direction.transpose() << ") tMax "
+    << tMax;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    o << "\n  element " << i << ":";
+    if constexpr (std::is_same_v<Stream, SphereStream>)
+      o << " (" << s[i].center.transpose() << ") r " << s[i].radius;
+    else if constexpr (std::is_same_v<Stream, BoxStream>)
+      o << " (" << s[i].min.transpose() << ") (" << s[i].max.transpose() << ")";
+    else
+      o << " (" << s[i].a.transpose() << ") (" << s[i].b.transpose() << ") (" << s[i].c.transpose()
+        << ")";
+  }
+  ScopedPath p("reference");
+  if (const auto h = raycast(r, s, tMax))
+    o << "\n  reference: " << h->index << " t " << h->t;
+  else
+    o << "\n  reference: miss";
+  return o.str();
+}
+
+template <class Stream>
+void rays(const char* what, const Ray& r, float t, const Stream& s) {
+  fuzz::sameOnEveryPath(
+      what, [&] { return key(raycast(r, s, t)); }, [&] { return describe(r, t, s); });
 }
 
 float tMax(fuzz::Input& in) {
@@ -108,22 +140,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const auto s = streamOf<BoxStream>(in, box);
         const Ray r{in.vec3(), in.direction()};
         const float t = tMax(in);
-        fuzz::sameOnEveryPath("raycast(Ray, BoxStream)", [&] { return key(raycast(r, s, t)); });
+        rays("raycast(Ray, BoxStream)", r, t, s);
         break;
       }
       case 6: {
         const auto s = streamOf<SphereStream>(in, sphere);
         const Ray r{in.vec3(), in.direction()};
         const float t = tMax(in);
-        fuzz::sameOnEveryPath("raycast(Ray, SphereStream)", [&] { return key(raycast(r, s, t)); });
+        rays("raycast(Ray, SphereStream)", r, t, s);
         break;
       }
       default: {
         const auto s = streamOf<TriangleStream>(in, triangle);
         const Ray r{in.vec3(), in.direction()};
         const float t = tMax(in);
-        fuzz::sameOnEveryPath("raycast(Ray, TriangleStream)",
-                              [&] { return key(raycast(r, s, t)); });
+        rays("raycast(Ray, TriangleStream)", r, t, s);
         break;
       }
     }

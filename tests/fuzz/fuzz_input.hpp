@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 #include <variant>
@@ -123,9 +124,11 @@ auto outcomeOf(F&& query) -> Outcome<decltype(query())> {
 }
 
 // Runs `query` on the reference path and on every other path this machine has; any difference
-// (a result, or an Error on one path and not another) is a finding. Returns the reference's.
+// (a result, or an Error on one path and not another) is a finding, whose message ends with
+// `context()` if given (the decoded input). Returns the reference's outcome.
 template <class F>
-auto sameOnEveryPath(const char* what, F&& query) {
+auto sameOnEveryPath(const std::string& what, F&& query,
+                     const std::function<std::string()>& context = {}) {
   static const std::vector<std::string> paths = availablePaths();
   auto reference = [&] {
     ScopedPath p("reference");
@@ -135,7 +138,8 @@ auto sameOnEveryPath(const char* what, F&& query) {
     if (path == "reference") continue;
     ScopedPath p(path);
     if (!(outcomeOf(query) == reference))
-      finding(std::string(what) + ": path " + path + " disagrees with the reference path");
+      finding(what + ": path " + path + " disagrees with the reference path" +
+              (context ? context() : std::string()));
   }
   return reference;
 }

@@ -3,6 +3,7 @@
 // overlaps, each on every path against the reference path, and against brute force over the
 // triangles (tests/mesh_oracles.hpp) where mesh_bvh.hpp promises equality.
 #include <optional>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -15,12 +16,58 @@ namespace {
 
 std::pair<std::uint32_t, std::uint32_t> key(const MeshHit& h) { return {h.id, fuzz::bitsOf(h.t)}; }
 
+// The mesh's triangles and a list of ids, for a finding's message.
+std::string show(const Mesh& m, const std::vector<std::uint32_t>& ids) {
+  std::ostringstream s;
+  s.precision(9);
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Triangle t = m.triangle(i);
+    s << "\n  triangle " << i << ": (" << t.a.transpose() << "), (" << t.b.transpose() << "), ("
+      << t.c.transpose() << ")";
+  }
+  s << "\n  ids:";
+  for (std::uint32_t id : ids) s << " " << id;
+  return s.str();
+}
+
+// A shape, for a finding's message.
+std::string describe(const Sphere& s) {
+  std::ostringstream o;
+  o.precision(9);
+  o << "Sphere{(" << s.center.transpose() << "), " << s.radius << "}";
+  return o.str();
+}
+std::string describe(const Aabb& b) {
+  std::ostringstream o;
+  o.precision(9);
+  o << "Aabb{(" << b.min.transpose() << "), (" << b.max.transpose() << ")}";
+  return o.str();
+}
+std::string describe(const Obb& b) {
+  std::ostringstream o;
+  o.precision(9);
+  o << "Obb{(" << b.center.transpose() << "), (" << b.halfExtents.transpose() << "), axes ("
+    << b.axes.reshaped().transpose() << ")}";
+  return o.str();
+}
+std::string describe(const Triangle& t) {
+  std::ostringstream o;
+  o.precision(9);
+  o << "Triangle{(" << t.a.transpose() << "), (" << t.b.transpose() << "), (" << t.c.transpose()
+    << ")}";
+  return o.str();
+}
+
 template <class Shape>
-void overlap(const MeshBvh& bvh, const Shape& shape, const char* what) {
-  const auto out = fuzz::sameOnEveryPath(what, [&] { return bvh.overlapping(shape); });
-  if (const auto* ids = fuzz::resultOf(out))
-    fuzz::require(*ids == test::bruteOverlapping(bvh.mesh(), shape),
-                  std::string(what) + ": differs from brute force");
+void overlap(const MeshBvh& bvh, const Shape& shape, const char* name) {
+  const std::string what = std::string("MeshBvh::overlapping(") + name + ")";
+  const auto out = fuzz::sameOnEveryPath(what.c_str(), [&] { return bvh.overlapping(shape); });
+  const auto* ids = fuzz::resultOf(out);
+  if (!ids) return;
+  const std::vector<std::uint32_t> brute = test::bruteOverlapping(bvh.mesh(), shape);
+  if (*ids != brute)
+    fuzz::finding(what + ": differs from brute force on " + describe(shape) +
+                  show(bvh.mesh(), *ids) + " (brute force:" + show(Mesh{}, brute).substr(7) + ")");
 }
 
 void query(const MeshBvh& bvh, fuzz::Input& in) {
@@ -54,24 +101,23 @@ void query(const MeshBvh& bvh, fuzz::Input& in) {
     }
     case 3: {
       const Sphere s{in.vec3(), in.scalar()};
-      overlap(bvh, s, "MeshBvh::overlapping(Sphere)");
+      overlap(bvh, s, "Sphere");
       break;
     }
     case 4: {
       const Vec3f a = in.vec3(), b = in.vec3();
       const Aabb box = in.byte() < 224 ? Aabb{a.cwiseMin(b), a.cwiseMax(b)} : Aabb{a, b};
-      overlap(bvh, box, "MeshBvh::overlapping(Aabb)");
+      overlap(bvh, box, "Aabb");
       break;
     }
     case 5: {
       const Vec3f c = in.vec3(), e = in.vec3();
-      overlap(bvh, Obb{c, in.byte() < 224 ? e.cwiseAbs() : e, in.axes()},
-              "MeshBvh::overlapping(Obb)");
+      overlap(bvh, Obb{c, in.byte() < 224 ? e.cwiseAbs() : e, in.axes()}, "Obb");
       break;
     }
     case 6: {
       const Vec3f a = in.vec3(), b = in.vec3();
-      overlap(bvh, Triangle{a, b, in.vec3()}, "MeshBvh::overlapping(Triangle)");
+      overlap(bvh, Triangle{a, b, in.vec3()}, "Triangle");
       break;
     }
     case 7: {  // a stream of rays in each mode, against single rays on the reference path
