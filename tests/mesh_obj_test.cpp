@@ -104,6 +104,16 @@ TEST(LoadObj, TriangulatesNonConvexPolygonsInside) {
   }
 }
 
+// The supported range (math.hpp) ends at kMaxCoordinate = 1e18f: "1e18" and "-1e18" round to it
+// and load; a value that rounds to a float past it does not (also "far.obj" and "big.obj" below).
+TEST(LoadObj, CoordinatesUpToTheSupportedRangeLoad) {
+  const Mesh m = parseObj("v -1e18 0 0\nv 1e18 0 0\nv 0 1e18 -1e18\nf 1 2 3\n", "edge");
+  EXPECT_EQ(m.vertices[0], Vec3f(-kMaxCoordinate, 0, 0));
+  EXPECT_EQ(m.vertices[2], Vec3f(0, kMaxCoordinate, -kMaxCoordinate));
+  test::expectError([] { parseObj("v 1.0000001e18 0 0\n", "past"); },
+                    "parseObj: past: line 1: x '1.0000001e18' is outside the supported range");
+}
+
 TEST(LoadObj, ParsesTextInMemory) {
   const Mesh m = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "memory");
   EXPECT_EQ(m.triangles, (std::vector<Tri>{{0, 1, 2}}));

@@ -116,11 +116,10 @@ class ObjParser {
     Vec3f p;
     static constexpr const char* kAxis[] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k) {
-      const double x = number(args[k], kAxis[k]);
-      if (std::abs(x) > double(kMaxCoordinate))
+      p[k] = float(number(args[k], kAxis[k]));  // the range applies to the float ("1e18" is in)
+      if (std::abs(p[k]) > kMaxCoordinate)
         fail(std::string(kAxis[k]) + " " + quoted(args[k]) +
              " is outside the supported range [-1e18, 1e18]");
-      p[k] = float(x);
     }
     for (std::size_t k = 3; k < args.size(); ++k) number(args[k], k == 3 ? "w" : "a colour");
     if (mesh_.vertices.size() == std::numeric_limits<std::uint32_t>::max())
