@@ -15,7 +15,7 @@ ensure_packages() {
 
 # What building and testing simdphys needs.
 SIMDPHYS_BUILD_PACKAGES=(g++ cmake make pkg-config libeigen3-dev libhwy-dev libgtest-dev
-  libbenchmark-dev libomp-dev libtinyobjloader-dev)
+  libbenchmark-dev libomp-dev)
 # What the examples need beyond that: stb_image_write for the renderer's PNG.
 SIMDPHYS_EXAMPLE_PACKAGES=(libstb-dev)
 

@@ -42,10 +42,20 @@ Mesh boxMesh(const Aabb& box);
 // A UV sphere: `rings` bands of latitude (>= 2) and `segments` of longitude (>= 3), facing out.
 Mesh sphereMesh(const Vec3f& center, float radius, std::uint32_t rings, std::uint32_t segments);
 
-// Reads a Wavefront OBJ file's vertices and faces (polygons triangulated by tinyobjloader; normals,
-// texture coordinates and materials are ignored). Throws Error naming the file and, where the
-// parser tells, the line: a missing or unreadable file, a malformed line, an index out of range,
-// and everything validate() rejects.
+// Reads a Wavefront OBJ file's vertices and faces. The subset read: `v x y z` (optionally followed
+// by w, or by a colour r g b, ignored), `f` with at least 3 corners of the forms v, v/vt, v//vn,
+// v/vt/vn (1-based indices, or negative ones counting back from the last element defined),
+// `vt` and `vn` (their indices are checked, their values ignored), comments (`#` to the end of
+// the line), and o, g, s, usemtl, mtllib and l (ignored). A quad is cut along its shorter
+// diagonal (the other one if only that lies inside it), a larger polygon is ear-clipped (a
+// convex one becomes a fan around its first vertex).
+// Throws Error naming the file and the line and saying what is wrong: a missing, unreadable or
+// directory path, an unknown statement, a token that is not a number or an integer (whole), a
+// value not finite or a coordinate beyond kMaxCoordinate (math.hpp), a wrong count of numbers, a
+// face of fewer than 3 vertices, an index out of range, a NUL byte, a degenerate triangle or a
+// polygon that cannot be triangulated; a file without faces is an error too.
 Mesh loadObj(const std::string& path);
+// The same for OBJ text in memory; errors name the function and `name` in place of the file.
+Mesh parseObj(std::string_view text, std::string_view name);
 
 }  // namespace simdphys
