@@ -223,6 +223,17 @@ TEST_P(TriangleReproducersOnPaths, SphereNearAThinMeshTriangleOverlaps) {
             std::vector<std::uint32_t>{0});
 }
 
+// The first reproducer's point, on its thin triangle, as a zero-radius sphere: it touches.
+TEST_P(TriangleReproducersOnPaths, PointOnAThinMeshTriangleOverlaps) {
+  Mesh mesh;
+  mesh.vertices = {Vec3f(-0.09375f, 0.6875f, 0.234375f), Vec3f(-0.203125f, -0.15625f, -0.46875f),
+                   Vec3f(-0.25f, -0.515625f, -0.765625f)};
+  mesh.triangles = {{0, 1, 2}};
+  const MeshBvh bvh(mesh);
+  EXPECT_EQ(bvh.overlapping(Sphere{Vec3f(-0.188875884f, -0.0463282466f, -0.377148539f), 0}),
+            std::vector<std::uint32_t>{0});
+}
+
 // =============================================================================================
 // Properties on random thin and collinear triangles (float against the double oracles)
 // =============================================================================================
