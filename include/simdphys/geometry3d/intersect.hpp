@@ -62,6 +62,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "simdphys/geometry3d/primitives.hpp"
@@ -168,6 +169,22 @@ bool properNormal(const std::array<Vec3<T>, 3>& e, Vec3<T>& normal) {
   return !degenerateTriangle(normal, longest);
 }
 
+// Scales the vertices v and the other vectors (all relative to the test's reference point) by one
+// power of two so that every component is below 1. Exact (no rounding, barring underflow far
+// below the tolerance), so the test's answer is that of the unscaled offsets; but the edge
+// crosses (L^2), their norms (L^4 before the root) and projections on them (L^3) stay finite for
+// shapes anywhere in the supported range: offsets of 2e18 would give 1e73 and report shapes at
+// opposite ends of the range as intersecting (an infinite tolerance).
+template <class T>
+void toUnitScale(std::array<Vec3<T>, 3>& v, std::initializer_list<Vec3<T>*> others) {
+  T m = 0;
+  for (const Vec3<T>& x : v) m = std::max(m, x.cwiseAbs().maxCoeff());
+  for (const Vec3<T>* x : others) m = std::max(m, x->cwiseAbs().maxCoeff());
+  const T inverse = inversePowerOfTwo(m);
+  for (Vec3<T>& x : v) x *= inverse;
+  for (Vec3<T>* x : others) *x *= inverse;
+}
+
 // Triangle-box SAT: the box's 3 face axes, the triangle's normal, the 9 crosses of box axes with
 // triangle edges. Complete also for a degenerate triangle (a segment: its Minkowski difference
 // with the box has only box faces and edge crosses; a point: only box faces) and for flat boxes
@@ -175,7 +192,8 @@ bool properNormal(const std::array<Vec3<T>, 3>& e, Vec3<T>& normal) {
 // normal n x e of a triangle edge is, on the flat difference, equivalent to any u x e that is not
 // parallel to n, and one of the three box axes gives such an axis).
 template <class T>
-bool triangleBoxIntersect(const std::array<Vec3<T>, 3>& v, const SatBox<T>& box) {
+bool triangleBoxIntersect(std::array<Vec3<T>, 3> v, SatBox<T> box) {
+  toUnitScale(v, {&box.center, &box.half});
   const T scale =
       box.center.norm() + box.half.sum() + std::max({v[0].norm(), v[1].norm(), v[2].norm()});
   const auto separated = [&](const Vec3<T>& axis) {
@@ -209,7 +227,8 @@ SegmentT<T> longestEdge(const std::array<Vec3<T>, 3>& v) {
 // twice the tolerance (once for the rounding, once for the up to tolerance * L by which a
 // degenerate triangle may stand off its longest edge).
 template <class T>
-bool trianglesIntersect(const std::array<Vec3<T>, 3>& v1, const std::array<Vec3<T>, 3>& v2) {
+bool trianglesIntersect(std::array<Vec3<T>, 3> v1, std::array<Vec3<T>, 3> v2) {
+  toUnitScale(v1, {&v2[0], &v2[1], &v2[2]});
   T scale = 0;
   for (int i = 0; i < 3; ++i) scale = std::max({scale, v1[i].norm(), v2[i].norm()});
   scale *= 2;  // also bounds the edge lengths
@@ -395,7 +414,7 @@ bool intersects(const PlaneT<T>& a, const PlaneT<T>& b) {
 template <class T>
 bool intersects(const TriangleT<T>& triangle, const SphereT<T>& sphere) {
   const Vec3<T> ac = sphere.center - triangle.a;
-  const T distance = (ac - detail::closestOnTriangle(triangle, sphere.center).offset).norm();
+  const T distance = (ac - detail::closestOnTriangle(triangle, sphere.center)).norm();
   const T longest = std::sqrt(detail::longestEdgeSquared<T>(
       triangle.b - triangle.a, triangle.c - triangle.a, triangle.c - triangle.b));
   return distance <=

@@ -83,38 +83,93 @@ T longestEdgeSquared(const Vec3<T>& ab, const Vec3<T>& ac, const Vec3<T>& bc) {
 // A triangle is degenerate when its height over the longest edge L is at most the tolerance times
 // L, |ab x ac| <= tol L^2: it is then a segment (or a point) to within the tolerance. The cross
 // product is accurate to about 2 eps L^2, so an exactly collinear triangle is always degenerate.
-// Compares norms, not squared norms, so that shapes of 1e-6 do not underflow in float (|n|^2
-// ~ L^4 stays a normal number down to sizes of about 1e-9 in float, 1e-77 in double).
+// |n|^2 ~ L^4 overflows in float for L above about 1e9 and underflows below 1e-9: callers scale
+// the edges first (TriangleFrame; intersect.hpp's triangle tests).
 template <class T>
 bool degenerateTriangle(const Vec3<T>& normal, T longestSquared) {
   return normal.norm() <= kGeometryTolerance<T> * longestSquared;
 }
 
-// The closest point of a triangle to p, as its offset from vertex a and its barycentric weights.
+// 2^-k for the power of two 2^k just above m (m > 0 finite), k kept where 2^-k and 2^k are
+// normal numbers; 1 for m = 0. Multiplying by it is exact (no rounding) unless the product
+// underflows.
 template <class T>
-struct TriangleClosest {
-  Vec3<T> offset;   // closest point - a
-  Vec3<T> weights;  // (u, v, w): closest point = u a + v b + w c
+T inversePowerOfTwo(T m) {
+  int k = 0;
+  std::frexp(m, &k);  // m = f 2^k with f in [0.5, 1)
+  return std::ldexp(T(1), -std::clamp(k, std::numeric_limits<T>::min_exponent,
+                                      std::numeric_limits<T>::max_exponent - 2));
+}
+
+// A triangle and a query point as offsets from the vertices, scaled by a power of two so that the
+// longest edge is about 1 (exact: the scaled computation rounds exactly as the unscaled one would
+// if it had an unbounded exponent). Products of up to four lengths (|n|^2, n.(e x ap)) then stay
+// finite for triangles of any size in the supported range (with edges of 1e10, L^4 = 1e40 would
+// overflow float) and do not underflow for small ones (edges of 1e-10). The offset of p counts
+// when it is over 2^100 times the triangle's size, so that scaled values stay below about 2^105
+// (finite) even for a query 1e18 away from a triangle of 1e-18; the triangle is then a point to
+// far within eps |ap|, and its tiny scaled edges may underflow harmlessly.
+//
+// The normal is computed as e x w from the longest edge e and the height w of the third vertex
+// over e's line (its offset r from the nearer end of e, minus r's part along e), not as
+// (b - a) x (c - a). Both are (b - a) x (c - a) in exact arithmetic (edges taken in the cyclic
+// order ab, bc, ca), but the cross product of two nearly parallel edges rounds each component by
+// about eps L^2, in any direction, and on a thin triangle (|n| = L h, h << L) that tilts n by
+// eps L / h also along the triangle, where offsets are long: n.ap was off by eps L |ap| / h (4e-5
+// for the second reproducer). e and w are perpendicular, so e x w is accurate to a few eps
+// relative to |n| but for the rounding of w, eps |r|: it tilts n about e, across the triangle,
+// where its offsets are at most h long, so n.(offset) is off by a few eps |r| <= eps L only, and
+// it changes |n| by eps |r| / h relative. |r| is the triangle's second-longest edge at most: on
+// a needle (one short edge) r is that short edge and n is accurate to a few eps; on a flat cap
+// (one angle near pi) |r| / h is large, as intrinsically (the cap's area moves by that much
+// when its middle vertex moves by eps |r|).
+template <class T>
+struct TriangleFrame {
+  Vec3<T> ab, ac, bc, ap, bp, cp;  // scaled offsets
+  Vec3<T> n;                       // scaled normal, (b - a) x (c - a) (see above)
+  T lab, lac, lbc;                 // scaled squared edge lengths
+  T scale;                         // a power of two: true offset = scale * scaled offset
+
+  TriangleFrame(const TriangleT<T>& t, const Vec3<T>& p) {
+    ab = t.b - t.a, ac = t.c - t.a, bc = t.c - t.b, ap = p - t.a, bp = p - t.b, cp = p - t.c;
+    const T size = std::max({ab.cwiseAbs().maxCoeff(), ac.cwiseAbs().maxCoeff(),
+                             bc.cwiseAbs().maxCoeff(), std::ldexp(ap.cwiseAbs().maxCoeff(), -100)});
+    const T inverse = inversePowerOfTwo(size);
+    scale = T(1) / inverse;
+    for (Vec3<T>* v : {&ab, &ac, &bc, &ap, &bp, &cp}) *v *= inverse;
+    lab = ab.squaredNorm(), lac = ac.squaredNorm(), lbc = bc.squaredNorm();
+    // The longest edge e, from P to Q, and the offset r of the third vertex from the nearer of P
+    // and Q (equivalent: e x (R - P) = e x (R - Q)).
+    const auto nearer = [](const Vec3<T>& x, T lx, const Vec3<T>& y, T ly) {
+      return lx <= ly ? x : y;
+    };
+    Vec3<T> e, r;
+    if (lab >= lac && lab >= lbc)
+      e = ab, r = nearer(ac, lac, bc, lbc);  // P = a, Q = b, R = c
+    else if (lbc >= lac)
+      e = bc, r = -nearer(ab, lab, ac, lac);  // P = b, Q = c, R = a
+    else
+      e = -ac, r = nearer(Vec3<T>(-bc), lbc, ab, lab);  // P = c, Q = a, R = b
+    const T ee = e.squaredNorm();
+    n = ee > 0 ? e.cross(r - e * (r.dot(e) / ee)) : Vec3<T>::Zero();
+  }
+
+  T longestSquared() const { return std::max({lab, lac, lbc}); }
+
+  bool degenerate() const { return degenerateTriangle(n, longestSquared()); }
 };
 
-// Degenerate triangle: the closest of the closest points of its three edges (for collinear
-// vertices one of them is the longest edge, which contains the others). Ties keep the first.
+// Degenerate triangle: the segment of its longest edge (within the tolerance it holds the third
+// vertex). The longest edge is chosen by squared lengths, exact up to rounding: two edges whose
+// squared lengths round alike differ in length by about eps L, and so do their segments. (Taking
+// the closest of the three edges' closest points instead compares distances that differ by less
+// than their rounding and can pick a wrong edge up to L sqrt(eps) away.) Returns the scaled
+// offset of the closest point from a.
 template <class T>
-TriangleClosest<T> closestOnDegenerateTriangle(const Vec3<T>& ab, const Vec3<T>& ac,
-                                               const Vec3<T>& bc, const Vec3<T>& ap,
-                                               const Vec3<T>& bp) {
-  const T tab = segmentParameter(ab, ap);
-  const T tac = segmentParameter(ac, ap);
-  const T tbc = segmentParameter(bc, bp);
-  TriangleClosest<T> best{tab * ab, Vec3<T>(1 - tab, tab, 0)};
-  T bestDistance = (ap - best.offset).norm();
-  const T dac = (ap - tac * ac).norm();
-  if (dac < bestDistance) {
-    best = {tac * ac, Vec3<T>(1 - tac, 0, tac)};
-    bestDistance = dac;
-  }
-  if ((bp - tbc * bc).norm() < bestDistance) best = {ab + tbc * bc, Vec3<T>(0, 1 - tbc, tbc)};
-  return best;
+Vec3<T> closestOnDegenerateTriangle(const TriangleFrame<T>& f) {
+  if (f.lab >= f.lac && f.lab >= f.lbc) return segmentParameter(f.ab, f.ap) * f.ab;
+  if (f.lac >= f.lbc) return segmentParameter(f.ac, f.ap) * f.ac;
+  return f.ab + segmentParameter(f.bc, f.bp) * f.bc;
 }
 
 // Ericson, Real-Time Collision Detection 5.1.5: find the Voronoi region of p (three vertex
@@ -122,42 +177,41 @@ TriangleClosest<T> closestOnDegenerateTriangle(const Vec3<T>& ab, const Vec3<T>&
 // feature. The region tests va, vb, vc are written as n.(edge x offset) (equal to Ericson's
 // d1 d4 - d3 d2 etc. by the Binet-Cauchy identity) because products of dot products lose digits
 // to cancellation on thin triangles.
+//
+// In the face region the point is p projected onto the plane, ap - n (n.ap) / |n|^2, not
+// Ericson's v ab + w ac: the barycentric weights of a thin triangle are uncertain by about
+// eps L^2 / |n| each, which moved v ab + w ac along the triangle by that times L (1e-5 for a unit
+// triangle with |n| / L^2 = 1e-2 in float). The projection's error is bounded without the angles:
+// n (TriangleFrame) is off in direction only across the triangle, where offsets over it are at
+// most |n| / L long, so n.ap is off by a few eps L for p over the triangle. The face test uses
+// the same n, so the projected point lies in the (computed) face. Altogether the returned point
+// is within about 8 eps (L + |ap|) of the true closest point for p on or near the triangle,
+// whatever its angles; for p at a distance D off the plane add about 8 eps D L^2 / |n| along the
+// plane (its tilt, as uncertain as the rounding of the vertices' offsets makes it). Measured
+// against a double oracle: geometry3d_triangle_test.cpp, docs/geometry.md.
+// Returns the closest point's offset from a.
 template <class T>
-TriangleClosest<T> closestOnTriangle(const TriangleT<T>& tri, const Vec3<T>& p) {
-  const Vec3<T> ab = tri.b - tri.a, ac = tri.c - tri.a, bc = tri.c - tri.b;
-  const Vec3<T> ap = p - tri.a, bp = p - tri.b;
-  const Vec3<T> n = ab.cross(ac);
-  if (degenerateTriangle(n, longestEdgeSquared(ab, ac, bc)))
-    return closestOnDegenerateTriangle(ab, ac, bc, ap, bp);
+Vec3<T> closestOnTriangle(const TriangleT<T>& tri, const Vec3<T>& p) {
+  const TriangleFrame<T> f(tri, p);
+  const Vec3<T>&ab = f.ab, &ac = f.ac, &bc = f.bc, &ap = f.ap, &bp = f.bp, &cp = f.cp, &n = f.n;
+  if (f.degenerate()) return f.scale * closestOnDegenerateTriangle(f);
 
   const T d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return {Vec3<T>::Zero(), Vec3<T>(1, 0, 0)};  // vertex a
+  if (d1 <= 0 && d2 <= 0) return Vec3<T>::Zero();  // vertex a
   const T d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return {ab, Vec3<T>(0, 1, 0)};  // vertex b
-  const Vec3<T> cp = p - tri.c;
+  if (d3 >= 0 && d4 <= d3) return tri.b - tri.a;  // vertex b
   const T d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return {ac, Vec3<T>(0, 0, 1)};  // vertex c
+  if (d6 >= 0 && d5 <= d6) return tri.c - tri.a;  // vertex c
 
   const T vc = n.dot(ab.cross(ap));  // <= 0: p is beyond edge ab
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-    const T t = unitRatio(d1, d1 - d3);
-    return {t * ab, Vec3<T>(1 - t, t, 0)};
-  }
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return f.scale * (unitRatio(d1, d1 - d3) * ab);
   const T vb = n.dot(ap.cross(ac));  // <= 0: beyond edge ca
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-    const T t = unitRatio(d2, d2 - d6);
-    return {t * ac, Vec3<T>(1 - t, 0, t)};
-  }
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return f.scale * (unitRatio(d2, d2 - d6) * ac);
   const T va = n.dot(bc.cross(bp));  // <= 0: beyond edge bc
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-    const T t = unitRatio(d4 - d3, (d4 - d3) + (d5 - d6));
-    return {ab + t * bc, Vec3<T>(0, 1 - t, t)};
-  }
-  // Face region: va, vb, vc are |n|^2 times the barycentric weights. |n|^2 is well above zero
-  // here (the triangle is not degenerate).
-  const T nn = n.squaredNorm();
-  const T v = vb / nn, w = vc / nn;
-  return {v * ab + w * ac, Vec3<T>(va / nn, v, w)};
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+    return f.scale * (ab + unitRatio(d4 - d3, (d4 - d3) + (d5 - d6)) * bc);
+  // Face region: the projection onto the plane (|n|^2 is well above zero: not degenerate).
+  return f.scale * (ap - n * (n.dot(ap) / n.squaredNorm()));
 }
 
 }  // namespace detail
@@ -217,15 +271,17 @@ bool contains(const RayT<T>& ray, const detail::NoDeduce<Vec3<T>>& point) {
 }
 
 // On the triangle (closed: its edges and vertices included): distance to it within the tolerance
-// (scale max(|p - a|, longest edge)). A degenerate triangle contains the points of its longest
-// edge.
+// (scale max(|p - a|, longest edge)). The closest point is accurate to about 8 eps (L + |p - a|)
+// for p within the tolerance of the triangle, whatever the triangle's angles (closestOnTriangle),
+// and 16 eps max(|p - a|, L) >= 8 eps (L + |p - a|), so a point of the triangle is never
+// rejected; the eps |p| term covers the rounding of p's own coordinates. A degenerate triangle
+// contains the points of its longest edge (its third vertex is within 16 eps L of that edge).
 template <class T>
 bool contains(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T>>& point) {
   const Vec3<T> ap = point - triangle.a;
-  const detail::TriangleClosest<T> closest = detail::closestOnTriangle(triangle, point);
   const T longest = std::sqrt(detail::longestEdgeSquared<T>(
       triangle.b - triangle.a, triangle.c - triangle.a, triangle.c - triangle.b));
-  return (ap - closest.offset).norm() <=
+  return (ap - detail::closestOnTriangle(triangle, point)).norm() <=
          detail::onShapeTolerance(std::max(ap.norm(), longest), point);
 }
 
@@ -278,10 +334,12 @@ Vec3<T> closestPoint(const RayT<T>& ray, const detail::NoDeduce<Vec3<T>>& point)
 }
 
 // Ericson's region method (5.1.5), not the book's, which can return a point of the wrong edge
-// (see above). A degenerate triangle gives the closest point of its longest edge.
+// (see above), with the face point projected onto the plane: accurate to about 8 eps (L + |p - a|)
+// on thin triangles too (see closestOnTriangle). A degenerate triangle gives the closest point
+// of its longest edge.
 template <class T>
 Vec3<T> closestPoint(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T>>& point) {
-  return triangle.a + detail::closestOnTriangle(triangle, point).offset;
+  return triangle.a + detail::closestOnTriangle(triangle, point);
 }
 
 // ---- barycentric coordinates ----------------------------------------------------------------
@@ -297,15 +355,19 @@ Vec3<T> closestPoint(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T
 // vertices and 0 on the third (unclamped: both are in [0, 1] for the points of the segment; the
 // third vertex, lying between the two, gets the weights of its position on the edge, not
 // (0, 0, 1)). All three vertices coinciding: (1, 0, 0).
+//
+// Accuracy: a weight is within about 16 eps (|opposite edge| (L + |p - a| + H L^2 / |n|) +
+// |weight| s L) / |n| (H the distance of p off the plane, s the shortest edge): its condition
+// number in p, the plane's tilt, and the uncertainty of |n| on a flat cap (TriangleFrame). On a
+// thin triangle the weights of the two vertices at the ends of a short edge are thus less precise
+// than the point they describe. Computed with the triangle scaled by a power of two
+// (TriangleFrame), so that |n|^2 ~ L^4 cannot overflow (edges of 1e10 in float) or underflow.
 template <class T>
 Vec3<T> barycentric(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T>>& point) {
-  const Vec3<T> ab = triangle.b - triangle.a, ac = triangle.c - triangle.a;
-  const Vec3<T> bc = triangle.c - triangle.b;
-  const Vec3<T> ap = point - triangle.a, bp = point - triangle.b;
-  const Vec3<T> n = ab.cross(ac);
-  const T lab = ab.squaredNorm(), lac = ac.squaredNorm(), lbc = bc.squaredNorm();
-  const T longest = std::max({lab, lac, lbc});
-  if (detail::degenerateTriangle(n, longest)) {
+  const detail::TriangleFrame<T> f(triangle, point);  // scaled: no overflow (see there)
+  const Vec3<T>&ab = f.ab, &ac = f.ac, &bc = f.bc, &ap = f.ap, &bp = f.bp, &n = f.n;
+  const T lab = f.lab, lac = f.lac, lbc = f.lbc, longest = f.longestSquared();
+  if (f.degenerate()) {
     if (!(longest > 0)) return Vec3<T>(1, 0, 0);
     if (lab == longest) {
       const T t = ap.dot(ab) / lab;
