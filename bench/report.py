@@ -85,15 +85,15 @@ SECTIONS = [
      "geometry into Embree's buffers. Peers: Embree's build at its default quality "
      "(embree_medium) and at high quality (embree_high), and Bullet's btBvhTriangleMeshShape "
      "(bullet_bvh_triangle_mesh)."),
-    ("W6 cull: frustum culling", ["cull_spheres", ("cull_boxes", "planes", "autovec", "planes_dram")],
-     "cull",
+    ("W6 cull: frustum culling",
+     ["cull_spheres", ("cull_boxes", "planes", "autovec", "planes_dram")], "cull",
      "1,000,000 spheres (16 bytes each) or AABBs (24 bytes each) tested against six planes; "
      "planes and autovec cull the same 16 or 24 MiB every iteration, which stays largely in "
      "a 32 MiB last-level cache; planes_dram (best path) cycles through copies of the data, "
      "at least 128 MiB in all, so each iteration reads from main memory (its bytes/s are "
-     "read against the 512 MiB streaming read in the targets). 'double-ref diff' is the number of objects whose visibility differs from a "
-     "double-precision cull. The culls of the same boxes through the octree and the BVH are in "
-     "the scene section below."),
+     "read against the 512 MiB streaming read in the targets). 'double-ref diff' is the "
+     "number of objects whose visibility differs from a double-precision cull. The culls of "
+     "the same boxes through the octree and the BVH are in the scene section below."),
     ("Scene: culling through the octree and the BVH, and their build",
      [("cull_boxes", "octree", "bvh"), "scene_build"], "scene",
      "The 1,000,000 W6 boxes culled through the scene's structures rather than as a flat "
@@ -544,9 +544,10 @@ def markdown(runs, context, source, images, mdpath):
            f"- SIMD paths available: {c('simdphys_paths').replace(',', ', ')}; active (default) "
            f"path: {c('simdphys_active_path')}. Each run forces one path.",
            f"- Timings are single-threaded wall-clock time per iteration (Google Benchmark "
-           f"`real_time`, {context['_runs']}), with the CPU time beside it ('cpu ms'); ratios are the baseline's time over the row's time (higher = "
-           "faster). 'vs ref': the same method on the scalar reference path; 'vs ref <method>': "
-           "that method on the reference path; 'vs autovec': the auto-vectorised loop on the "
+           f"`real_time`, {context['_runs']}), with the CPU time beside it ('cpu ms'); ratios "
+           "are the baseline's time over the row's time (higher = faster). 'vs ref': the same "
+           "method on the scalar reference path; 'vs ref <method>': that method on the reference "
+           "path; 'vs autovec': the auto-vectorised loop on the "
            "same path; 'vs peer': the fastest peer engine at the same N; '-': no baseline run."]
     if busy:
         out.append(f"- {busy} of {len(runs)} runs had a wall time more than 30% above their CPU "
