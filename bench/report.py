@@ -53,9 +53,11 @@ SECTIONS = [
     ("W1 pairs: broadphase", ["aabb_pairs"], "aabb_pairs",
      "All overlapping pairs among N boxes; throughput is boxes per second. grid is the default "
      "method and the only one run on the reference path ('vs ref grid' compares every method "
-     "with it); autovec is the grid sweep with its inner loop left to the compiler. Peers: "
-     "Bullet's btDbvtBroadphase, deferred (bullet_dbvt) and immediate "
-     "(bullet_dbvt_immediate), timed from proxy creation to the complete pair cache."),
+     "with it); autovec is the grid sweep with its inner loop left to the compiler. Each "
+     "method runs on a persistent PairFinder. Peer: Bullet's btDbvtBroadphase in deferred mode "
+     "(bullet_dbvt), persistent too, as a world keeps it: a step sets the N boxes (setAabb) "
+     "and calls calculateOverlappingPairs, which in deferred mode collides the dynamic tree "
+     "with itself, a complete pair search."),
     ("W2 rays: closest hits on a heightfield", ["rays/coherent", "rays/incoherent"], "w2_rays",
      "Closest hits of the 786,432 rays of a 1024 x 768 camera (coherent) and of 1,000,000 rays "
      "from random points in random directions (incoherent) against the 524,288 triangles of the "
@@ -64,9 +66,13 @@ SECTIONS = [
      "('vs ref bvh' compares every method with that scalar traversal); auto is the default "
      "stream options: coherent groups of 16 rays traced as packets, the other rays sorted by "
      "where they enter the tree and traced singly; packet16 and packet8 trace the image's "
-     "4 x 4 and 4 x 2 tiles as packets (coherent set only). Peers: Embree 3 with rtcIntersect1 "
-     "(embree_intersect1, single rays), rtcIntersect16 (embree_intersect16, 4 x 4 tiles) and "
-     "its stream API rtcIntersect1M (embree_intersect1M), without its robust flag; Bullet's "
+     "4 x 4 and 4 x 2 tiles as packets (coherent set only). Peers: Embree 3 used as its "
+     "documentation asks, the camera rays with a COHERENT intersect context and the random "
+     "rays with the default INCOHERENT one: rtcIntersect1 (embree_intersect1, single rays), "
+     "rtcIntersect8 and rtcIntersect16 on the same 4 x 2 and 4 x 4 tiles (embree_intersect8, "
+     "embree_intersect16, coherent set) and its stream API rtcIntersect1M "
+     "(embree_intersect1M), on a scene with the default flags (Embree's fast triangle test) "
+     "and, as embree_robust_*, with RTC_SCENE_FLAG_ROBUST (its watertight test); Bullet's "
      "btBvhTriangleMeshShape (bullet_bvh_triangle_mesh). Check: the hit count against W2's "
      "figure (a simdphys run fails if it differs; a peer is measured whatever it answers); "
      "'differ' counts the rays whose answer differs from the double-precision reference, "
@@ -79,11 +85,15 @@ SECTIONS = [
      "geometry into Embree's buffers. Peers: Embree's build at its default quality "
      "(embree_medium) and at high quality (embree_high), and Bullet's btBvhTriangleMeshShape "
      "(bullet_bvh_triangle_mesh)."),
-    ("W6 cull: frustum culling", ["cull_spheres", ("cull_boxes", "planes", "autovec")], "cull",
+    ("W6 cull: frustum culling",
+     ["cull_spheres", ("cull_boxes", "planes", "autovec", "planes_dram")], "cull",
      "1,000,000 spheres (16 bytes each) or AABBs (24 bytes each) tested against six planes; "
-     "'double-ref diff' is the number of objects whose visibility differs from a "
-     "double-precision cull. The culls of the same boxes through the octree and the BVH are in "
-     "the scene section below."),
+     "planes and autovec cull the same 16 or 24 MiB every iteration, which stays largely in "
+     "a 32 MiB last-level cache; planes_dram (best path) cycles through copies of the data, "
+     "at least 128 MiB in all, so each iteration reads from main memory (its bytes/s are "
+     "read against the 512 MiB streaming read in the targets). 'double-ref diff' is the "
+     "number of objects whose visibility differs from a double-precision cull. The culls of "
+     "the same boxes through the octree and the BVH are in the scene section below."),
     ("Scene: culling through the octree and the BVH, and their build",
      [("cull_boxes", "octree", "bvh"), "scene_build"], "scene",
      "The 1,000,000 W6 boxes culled through the scene's structures rather than as a flat "
@@ -136,7 +146,8 @@ SECTIONS = [
 ]
 AVX512 = ("avx512dl", "avx512")
 # rate: throughput in the task's unit (bytes/s for bandwidth); bps: bytes/s where reported.
-Run = namedtuple("Run", "task method path n ms real_ms rate bps counters error")
+# ms: wall-clock (real) time per iteration, what ratios use; cpu_ms: the CPU time beside it.
+Run = namedtuple("Run", "task method path n ms cpu_ms rate bps counters error")
 
 
 def load(path):
@@ -156,17 +167,18 @@ def load(path):
     scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
     runs = {}
     for e in entries:
-        parts = e.get("run_name", e["name"]).split("/")
+        # Google Benchmark appends /real_time to the names of runs timed in wall-clock time.
+        parts = e.get("run_name", e["name"]).removesuffix("/real_time").split("/")
         if len(parts) < 4 or not parts[-1].isdigit():
             continue
         # The task may hold a slash itself (rays/coherent): n, path and method are the last three.
         task, method, p, n = "/".join(parts[:-3]), *parts[-3:]
         unit = scale[e.get("time_unit", "ns")]
-        ms = e.get("cpu_time", 0) * unit
+        ms = e.get("real_time", 0) * unit
         failed = bool(e.get("error_occurred"))
         runs[(task, method, p, int(n))] = Run(
             task, method, p, int(n), ms if ms > 0 and not failed else None,
-            e.get("real_time", 0) * unit,
+            e.get("cpu_time", 0) * unit,
             e.get("bytes_per_second" if unit_of(task) == "B/s" else "items_per_second"),
             e.get("bytes_per_second"), e, e.get("error_message", "failed") if failed else None)
     return context, runs
@@ -207,7 +219,8 @@ def baselines(runs, r):
         plain = "autovec"
     keys = {"ref": (r.task, r.method, "reference", r.n), "base": (r.task, base, "reference", r.n),
             "autovec": (r.task, plain, r.path, r.n)}
-    out = {k: runs[key].ms / r.ms if key in runs and runs[key].ms and r.ms else None
+    dram = r.method.endswith("_dram")  # read from main memory: no baseline reads the same way
+    out = {k: runs[key].ms / r.ms if not dram and key in runs and runs[key].ms and r.ms else None
            for k, key in keys.items()}
     out["peer"] = min(peers) / r.ms if peers and r.ms else None
     return out
@@ -298,15 +311,13 @@ def rays_check(c):
 
 
 def order(runs, tasks):
-    """Runs of the given tasks: by task, n, method, then path in the machine's order."""
+    """Runs of the given tasks: by task, n, simdphys methods before peers, method name (the
+    JSON's order is random with interleaved repetitions), then path in the machine's order."""
     paths = ["avx512dl", "avx512", "avx2", "sse4", "hwy_scalar", "scalar", "reference", "peer"]
     rank = lambda p: paths.index(p) if p in paths else len(paths)  # noqa: E731
-    methods = {}
-    for r in runs.values():
-        methods.setdefault((r.task, r.method), len(methods))
     index = names(tasks).index
     return sorted((r for r in runs.values() if picks(tasks, r)),
-                  key=lambda r: (index(r.task), r.n, methods[(r.task, r.method)], rank(r.path)))
+                  key=lambda r: (index(r.task), r.n, r.path == "peer", r.method, rank(r.path)))
 
 
 def table(runs, tasks, markdown):
@@ -318,8 +329,9 @@ def table(runs, tasks, markdown):
             ("autovec", "vs autovec"), ("peer", "vs peer")]
     ratios = [baselines(runs, r) for r in rows]
     cols = [(k, h) for k, h in cols if any(x[k] is not None for x in ratios)]
-    head = ["task", "method", "path", "N", "ms/iter", "throughput"] + [h for _, h in cols]
-    body = [[r.task, r.method, r.path, size(r), fixed(r.ms), eng(r.rate, unit_of(r.task))
+    head = ["task", "method", "path", "N", "ms/iter", "cpu ms", "throughput"] + [h for _, h in cols]
+    body = [[r.task, r.method, r.path, size(r), fixed(r.ms), fixed(r.cpu_ms),
+             eng(r.rate, unit_of(r.task))
              + (f" ({eng(r.bps, 'B/s')})" if r.bps and unit_of(r.task) != "B/s" else "")]
             + [times(x[k]) for k, _ in cols] + [check(r)] for r, x in zip(rows, ratios)]
     head.append("check")
@@ -419,10 +431,12 @@ def target_specs():
         this = (task, "planes", "*", 1000000)
         specs += [(f"{task} N=1,000,000: planes vs reference", this,
                    (task, "planes", "reference", 1000000), 10),
-                  (f"{task} bytes/s vs streaming read at {size_mib} MiB", this,
-                   ("bandwidth", "read", "scalar", size_mib * mib), 0.5),
-                  (f"{task} bytes/s vs streaming read at 512 MiB (information)", this,
-                   ("bandwidth", "read", "scalar", 512 * mib), None)]
+                  (f"{task} bytes/s vs streaming read at {size_mib} MiB (both re-read each "
+                   "iteration: largely from the cache)",
+                   this, ("bandwidth", "read", "scalar", size_mib * mib), 0.5),
+                  (f"{task} from main memory (planes_dram) bytes/s vs streaming read at 512 MiB",
+                   (task, "planes_dram", "*", 1000000),
+                   ("bandwidth", "read", "scalar", 512 * mib), 0.5)]
     for task, method, n, goal in (("ray_boxes", "closest", 100000, 10),
                                   ("ray_triangles", "closest", 32768, 10),
                                   ("obb_obbs", "sat", 100000, 6)):
@@ -438,8 +452,14 @@ def rays_specs():
     auto = (inc[0], "auto", "*", inc[1])
     peer = lambda w, method: (w[0], method, "peer", w[1])  # noqa: E731
     return [
-        ("rays/coherent N=786,432: best of packet16 and auto vs Embree rtcIntersect16", best,
-         peer(co, "embree_intersect16"), 1),
+        ("rays/coherent N=786,432: best of packet16 and auto vs Embree rtcIntersect16 "
+         "(COHERENT context)", best, peer(co, "embree_intersect16"), 1),
+        ("rays/coherent N=786,432: best of packet16 and auto vs Embree's robust scene, "
+         "rtcIntersect16 (information)", best, peer(co, "embree_robust_intersect16"), None),
+        ("rays/coherent N=786,432: packet8 vs Embree rtcIntersect8 (information)",
+         (co[0], "packet8", "*", co[1]), peer(co, "embree_intersect8"), None),
+        ("rays/coherent N=786,432: bvh (single rays) vs Embree rtcIntersect1 (information)",
+         (co[0], "bvh", "*", co[1]), peer(co, "embree_intersect1"), None),
         ("rays/coherent N=786,432: best of packet16 and auto vs Bullet btBvhTriangleMeshShape",
          best, peer(co, "bullet_bvh_triangle_mesh"), 8),
         ("rays/incoherent N=1,000,000: auto vs Embree rtcIntersect1", auto,
@@ -510,7 +530,7 @@ def cpu_model(context):
 def markdown(runs, context, source, images, mdpath):
     """The Markdown report: header, machine, one section per workload with its plot (images:
     section title -> PNG path), targets."""
-    busy = sum(1 for r in runs.values() if r.ms and r.real_ms > 1.3 * r.ms)
+    busy = sum(1 for r in runs.values() if r.ms and r.ms > 1.3 * r.cpu_ms)
     load = ", ".join(f"{x:.2f}" for x in context.get("load_avg", []))
     c = lambda key: context.get(key, "unknown")  # noqa: E731
     out = [f"<!-- Generated by bench/report.py from {source}; do not edit by hand. -->",
@@ -523,10 +543,11 @@ def markdown(runs, context, source, images, mdpath):
            f"library itself: {c('library_build_type')} build)",
            f"- SIMD paths available: {c('simdphys_paths').replace(',', ', ')}; active (default) "
            f"path: {c('simdphys_active_path')}. Each run forces one path.",
-           f"- Timings are single-threaded CPU time per iteration (Google Benchmark `cpu_time`, "
-           f"{context['_runs']}); ratios are the baseline's time over the row's time (higher = "
-           "faster). 'vs ref': the same method on the scalar reference path; 'vs ref <method>': "
-           "that method on the reference path; 'vs autovec': the auto-vectorised loop on the "
+           f"- Timings are single-threaded wall-clock time per iteration (Google Benchmark "
+           f"`real_time`, {context['_runs']}), with the CPU time beside it ('cpu ms'); ratios "
+           "are the baseline's time over the row's time (higher = faster). 'vs ref': the same "
+           "method on the scalar reference path; 'vs ref <method>': that method on the reference "
+           "path; 'vs autovec': the auto-vectorised loop on the "
            "same path; 'vs peer': the fastest peer engine at the same N; '-': no baseline run."]
     if busy:
         out.append(f"- {busy} of {len(runs)} runs had a wall time more than 30% above their CPU "
