@@ -139,7 +139,10 @@ StreamHit RayClosestTriangleAutovec(const WatertightQuery& r, const TrianglesVie
     const bool anyPositive = u > 0 || w1 > 0 || w2 > 0;
     const float det = (u + w1) + w2;
     const float scaled = (u * (r.sz * pz[0]) + w1 * (r.sz * pz[1])) + w2 * (r.sz * pz[2]);
-    const float t = scaled / det + 0.0f;
+    const float t = (std::isfinite(scaled) ? scaled / det
+                                           : u / det * (r.sz * pz[0]) + w1 / det * (r.sz * pz[1]) +
+                                                 w2 / det * (r.sz * pz[2])) +
+                    0.0f;
     if (!(anyNegative && anyPositive) && det != 0 && t >= 0 && t <= r.tMax && t < best.t)
       best = {std::uint32_t(i), t};
   }

@@ -454,5 +454,37 @@ TEST(FarApart, TriangleAgainstSpherePlaneAtTheOtherEnd) {
   EXPECT_TRUE(intersects(left, Plane{Vec3f(1, 0, 0), 0.5f * E}));  // x = -0.5E: touches at b
 }
 
+// A ray across the whole range to a triangle at its far end: u * depth (about L^2 times the
+// distance, 1e54) overflowed float and the hit came back with t = inf. Expected: the ray
+// (-E, 0.2E, 0) + t (1, 0, 0) meets the triangle's plane at x = 0.95E, at barycentric
+// (0.4, 0.1, 0.5) (solved by hand: r = 0.5 from z, s = 0.1 from y), so t = 1.95E, recomputed
+// here in double from the float inputs. Tolerance 16 eps t: the barycentric form rounds each of
+// its three terms (each at most 2E) a few times, 4 eps of 2E each at most.
+TEST_P(TriangleReproducersOnPaths, RayAcrossTheRangeHitsAFarTriangle) {
+  const float E = kMaxCoordinate;
+  const Triangle t{Vec3f(E, -E, -E), Vec3f(0.5f * E, E, -E), Vec3f(E, E, E)};
+  const Ray ray{Vec3f(-E, 0.2f * E, 0), Vec3f(1, 0, 0)};
+  const double a = double(E), b = double(0.5f * E), y = double(0.2f * E);
+  // The hit is a + s (b - a) + r (c - a): r = 0.5 from z = 0, s = y / 2E from y, and its x is
+  // E + s (0.5E - E); t is that x minus the origin's -E.
+  const double s = y / (2 * a), expected = a + s * (b - a) + a;
+  const double tolerance = 16 * kEpsF * expected;
+  const std::optional<RayHit> single = raycast(t, ray);
+  ASSERT_TRUE(single.has_value());
+  EXPECT_NEAR(single->t, expected, tolerance);
+  TriangleStream stream;
+  stream.push(t);
+  const std::optional<StreamHit> batch = raycast(ray, stream);
+  ASSERT_TRUE(batch.has_value());
+  EXPECT_EQ(batch->index, 0u);
+  EXPECT_NEAR(batch->t, expected, tolerance);
+  Mesh mesh;
+  mesh.vertices = {t.a, t.b, t.c};
+  mesh.triangles = {{0, 1, 2}};
+  const MeshHit hit = MeshBvh(mesh).raycast(ray);
+  ASSERT_TRUE(hit.hit());
+  EXPECT_NEAR(hit.t, expected, tolerance);
+}
+
 }  // namespace
 }  // namespace simdphys

@@ -375,7 +375,12 @@ std::optional<TriangleHitT<T>> intersectTriangle(
   const T det = u + v + w;
   if (!(det != 0)) return std::nullopt;
   const T scaledT = u * (ray.sz * a[kz]) + v * (ray.sz * b[kz]) + w * (ray.sz * c[kz]);
-  const T t = scaledT / det;
+  // Near the edges of the supported range u * depth (about L^2 times the distance) overflows;
+  // the barycentric form cannot (u / det is in [0, 1] for a hit) and is taken only then, so
+  // every other t keeps its bits. The SIMD kernels (watertight-inl.hpp) do the same.
+  const T t = std::isfinite(scaledT) ? scaledT / det
+                                     : u / det * (ray.sz * a[kz]) + v / det * (ray.sz * b[kz]) +
+                                           w / det * (ray.sz * c[kz]);
   if (!(t >= 0 && t <= tMax)) return std::nullopt;
   return TriangleHitT<T>{t + T(0), u / det, v / det, w / det};
 }
