@@ -284,7 +284,8 @@ double relativeError(double got, double want) { return std::abs(got - want) / st
 // apart.
 TEST_P(RangeBatch, SpheresAtTheEdgesOfTheRange) {
   expectError([] { validate(Sphere{{-1e20f, 0, 0}, 1}, "intersects"); }, "center.x is -1e+20");
-  const Sphere low{{-0.75e18f, -0.75e18f, -0.75e18f}, 0.25e18f}, high{{0.75e18f, 0.75e18f, 0.75e18f}, 0.25e18f};
+  const Sphere low{{-0.75e18f, -0.75e18f, -0.75e18f}, 0.25e18f},
+      high{{0.75e18f, 0.75e18f, 0.75e18f}, 0.25e18f};
   const Sphere left{{-0.5e18f, 0, 0}, 0.5e18f}, right{{0.5e18f, 0, 0}, 0.5e18f};
   const Sphere apart{{0.5e18f, 0, 0}, 0.4999e18f};  // 1e14 short of the origin
   EXPECT_FALSE(intersects(low, high));
@@ -401,7 +402,8 @@ TEST_P(RangeBatch, SphereRaycastsFromTheEdgeOfTheRange) {
 // distances below.
 TEST(Range, GjkAndEpaAtTheEdgesOfTheRange) {
   const double tolerance = 16 * kEps * 4e18;
-  const Sphere low{{-0.75e18f, -0.75e18f, -0.75e18f}, 0.25e18f}, high{{0.75e18f, 0.75e18f, 0.75e18f}, 0.25e18f};
+  const Sphere low{{-0.75e18f, -0.75e18f, -0.75e18f}, 0.25e18f},
+      high{{0.75e18f, 0.75e18f, 0.75e18f}, 0.25e18f};
   const GjkResult spheres = gjkDistance(low, high);
   EXPECT_FALSE(spheres.intersecting);
   EXPECT_NEAR(spheres.distance, 1.5e18 * std::sqrt(3.0) - 0.5e18, tolerance);
