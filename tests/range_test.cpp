@@ -211,6 +211,17 @@ TEST(Range, RayFromToAndPlaneFromPointNormalScaleBeforeNormalising) {
   expectError([] { (void)Plane::fromPointNormal({kMax, kMax, kMax}, {1, 1, 1}); }, "d is -1.7");
 }
 
+TEST(Range, QuadtreeQueriesValidateTheirArgument) {
+  Quadtree tree(Rect{{-kMax, -kMax}, {kMax, kMax}});
+  tree.insert(7, {{0.5e18f, 0.5e18f}, {kMax, kMax}});
+  expectError([&] { (void)tree.query(Rect{{0, 0}, {kNaN, 1}}); }, "Quadtree::query: max.x is nan");
+  expectError([&] { (void)tree.query(Circle{{0, 0}, -1}); }, "Quadtree::query: radius is -1");
+  expectError([&] { (void)tree.query(Vec2f(2e18f, 0)); }, "Quadtree::query: point.x is 2e+18");
+  expectError([&] { tree.insert(8, {{0, 0}, {1, 3e18f}}); }, "Quadtree::insert: box of id 8");
+  EXPECT_EQ(tree.query(Vec2f(kMax, kMax)), std::vector<std::uint32_t>{7});  // the corner
+  EXPECT_EQ(tree.query(Circle{{-0.5e18f, -0.5e18f}, 0.5e18f}), std::vector<std::uint32_t>{});
+}
+
 // ---- bad arguments of the batch queries ---------------------------------------------------------
 
 class RangeBatch : public OnEveryPath {};
