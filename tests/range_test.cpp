@@ -315,7 +315,14 @@ TEST_P(RangeBatch, SpheresAtTheEdgesOfTheRange) {
   overlapping(low, boxes, ids);
   EXPECT_EQ(ids, Ids{});
   overlapping(left, boxes, ids);
-  EXPECT_EQ(ids, (Ids{1}));  // touches the face x = 0
+  EXPECT_EQ(ids, (Ids{1}));                         // touches the face x = 0
+  containing(Vec3f(kMax, kMax, kMax), boxes, ids);  // the corner of the range is in both
+  EXPECT_EQ(ids, (Ids{0, 1}));
+  PointStream closest;
+  closestPoints(Vec3f(-kMax, -kMax, -kMax), boxes, closest);  // clamps: exact
+  ASSERT_EQ(closest.size(), 2u);
+  EXPECT_EQ(closest[0], Vec3f::Constant(0.8e18f));
+  EXPECT_EQ(closest[1], Vec3f(0, -kMax, -kMax));
 }
 
 // Oriented boxes turned by 30 degrees at opposite corners, 2.8e18 apart, and two large boxes
