@@ -104,6 +104,8 @@ TEST(Range, PrimitivesOutsideTheRangeAreRejected2d) {
   const std::vector<Vec2f> far{{0, 0}, {1e20f, 0}};
   expectError([&] { (void)containingCircle(far); }, "containingCircle: points[1].x is 1e+20");
   expectError([&] { (void)containingRect(far); }, "containingRect: points[1].x is 1e+20");
+  const std::vector<Vec2f> nan{{0, 0}, {kNaN, 1}};
+  expectError([&] { (void)containingCircle(nan); }, "containingCircle: points[1].x is nan");
 }
 
 TEST(Range, StreamsRejectWhatLeavesTheRange) {

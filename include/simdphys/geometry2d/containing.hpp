@@ -41,8 +41,10 @@ namespace detail::g2 {
 template <class T>
 void requirePoints(std::span<const Vec2<T>> points, const char* fn) {
   if (points.empty()) throw Error(std::string(fn) + ": no points");
-  for (std::size_t i = 0; i < points.size(); ++i)
-    requireInRange(points[i], fn, ("points[" + std::to_string(i) + "]").c_str());
+  const auto inRange = [](T x) { return detail::inSupportedRange(std::abs(double(x))); };
+  for (std::size_t i = 0; i < points.size(); ++i)  // the name is built only for the message
+    if (!(inRange(points[i].x()) && inRange(points[i].y())))
+      requireInRange(points[i], fn, ("points[" + std::to_string(i) + "]").c_str());
 }
 
 // The circle with a and b on opposite ends of a diameter.

@@ -165,8 +165,9 @@ namespace detail::g2 {
 // outside the supported range +-1e+18".
 template <class T>
 void requireInRange(const Vec2<T>& v, std::string_view where, const char* field) {
-  for (int a = 0; a < 2; ++a)
-    detail::requireInRange(v[a], where, std::string(field) + (a == 0 ? ".x" : ".y"));
+  for (int a = 0; a < 2; ++a)  // the field's name is built only for the message
+    if (!detail::inSupportedRange(std::abs(double(v[a]))))
+      detail::requireInRange(v[a], where, std::string(field) + (a == 0 ? ".x" : ".y"));
 }
 template <class T>
 void requireFinite(T x, std::string_view where, const char* field) {

@@ -135,8 +135,9 @@ namespace detail {
 template <class V>
 void requireFiniteField(const V& v, std::string_view where, const char* field) {
   constexpr char kAxis[] = {'x', 'y', 'z', 'w'};
-  for (int a = 0; a < int(v.size()); ++a)
-    requireInRange(v[a], where, std::string(field) + '.' + kAxis[a]);
+  for (int a = 0; a < int(v.size()); ++a)  // the field's name is built only for the message
+    if (!inSupportedRange(std::abs(double(v[a]))))
+      requireInRange(v[a], where, std::string(field) + '.' + kAxis[a]);
 }
 template <class T>
 void requireFiniteScalar(T x, std::string_view where, const char* field) {
