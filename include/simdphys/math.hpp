@@ -20,6 +20,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -77,6 +78,75 @@ inline constexpr T kGeometryTolerance = T(16) * std::numeric_limits<T>::epsilon(
 // meshes, transforms and files, which reject anything outside the range with an Error.
 inline constexpr float kMaxCoordinate = 1e18f;
 inline constexpr float kMinScale = 1e-18f;
+
+namespace detail {
+
+// Whether a magnitude is in the supported range. The range is a float range: a double is compared
+// after rounding to float, so the double 1e18 is in it too. False for NaN.
+inline bool inSupportedRange(double magnitude) {
+  return magnitude <= std::numeric_limits<float>::max() && float(magnitude) <= kMaxCoordinate;
+}
+
+// Throws Error unless |x| is in the supported range: "where: field is 1e+20, outside the
+// supported range +-1e+18" (or "..., not finite").
+template <std::floating_point T>
+void requireInRange(T x, std::string_view where, std::string_view field) {
+  if (inSupportedRange(std::abs(double(x)))) return;
+  std::ostringstream msg;
+  msg << where << ": " << field << " is " << x;
+  if (std::isfinite(x))
+    msg << ", outside the supported range +-" << kMaxCoordinate;
+  else
+    msg << ", not finite";
+  throw Error(msg.str());
+}
+
+// Throws Error unless the shape center +- reach (reach >= 0 per axis: a radius, a box's extent
+// along the axis) lies in the supported range on every axis, so that its bounds are in range
+// too: for float input, float(center + reach) <= kMaxCoordinate exactly when this passes (the sum
+// is taken in double, then rounded to float).
+template <class C, class R>
+void requireReachInRange(const C& center, const R& reach, std::string_view where,
+                         std::string_view what) {
+  constexpr char kAxis[] = {'x', 'y', 'z', 'w'};
+  for (int a = 0; a < int(center.size()); ++a) {
+    const double bound = std::abs(double(center[a])) + double(reach[a]);
+    if (inSupportedRange(bound)) continue;
+    std::ostringstream msg;
+    msg << where << ": " << what << " reaches " << bound << " on " << kAxis[a]
+        << ", outside the supported range +-" << kMaxCoordinate;
+    throw Error(msg.str());
+  }
+}
+
+// v / |v| for any finite non-zero v, whatever its magnitude: v is divided by its largest
+// |component| first, so |v|^2 neither overflows nor underflows. `fallback` when v is zero or not
+// finite. The library's one way to normalise a direction it is given.
+template <class D>
+Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, 1> unitOr(
+    const Eigen::MatrixBase<D>& v,
+    const Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, 1>& fallback) {
+  using T = typename D::Scalar;
+  const T m = v.cwiseAbs().maxCoeff();
+  if (!(m > 0) || !std::isfinite(m)) return fallback;
+  const Eigen::Matrix<T, D::RowsAtCompileTime, 1> s = v / m;
+  return s / s.norm();
+}
+
+// The power of two 2^-e that brings m into [0.5, 1) (or as near as float's exponents allow for a
+// subnormal m); 1 for m = 0 or not finite. Multiplying by it is exact (barring subnormal
+// results), so a computation on rescaled values gives the bits of the unscaled one wherever that
+// one does not overflow or underflow: the way to compute products of lengths (|n|^2 ~ L^4,
+// volumes ~ L^3) at any scale in the supported range.
+template <std::floating_point T>
+T inversePowerOfTwo(T m) {
+  if (!(m > 0) || !std::isfinite(m)) return T(1);
+  int e = 0;
+  (void)std::frexp(m, &e);
+  return std::ldexp(T(1), -std::max(e, std::numeric_limits<T>::min_exponent));
+}
+
+}  // namespace detail
 
 // A world-space ray through a pixel (see screenToRay).
 template <class T>

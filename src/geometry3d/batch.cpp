@@ -36,6 +36,8 @@ simd::RayQuery query(const Ray& r, float tMax) {
 template <class Stream, class Kernel>
 std::optional<StreamHit> closest(const Ray& ray, const Stream& stream, float tMax, Kernel kernel) {
   validate(ray, "raycast");
+  if (!(tMax >= 0))  // as MeshBvh's: +inf is fine, NaN or negative is a caller's bug
+    throw Error("raycast: tMax " + std::to_string(tMax) + " is negative or NaN");
   if (referencePathActive()) {
     std::optional<StreamHit> best;
     for (std::uint32_t i = 0; i < stream.size(); ++i)

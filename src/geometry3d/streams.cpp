@@ -43,6 +43,7 @@ void BoundsStream::push(const Vec3f& center, const Vec3f& halfExtents) {
   constexpr char kAxis[] = {'x', 'y', 'z'};
   for (int a = 0; a < 3; ++a)
     if (!(halfExtents[a] >= 0)) throw Error(where + ": halfExtents." + kAxis[a] + " is negative");
+  detail::requireReachInRange(center, halfExtents, where, "center +- halfExtents");
   append({center.x(), center.y(), center.z(), halfExtents.x(), halfExtents.y(), halfExtents.z()});
 }
 

@@ -17,6 +17,9 @@
 //   collide(a, b) with the normal negated, bit for bit. For two shapes of the same type both
 //   orders compute on the lexicographically smaller shape first, so even ties resolve the same way.
 //
+// Inputs are not validated: they are assumed valid and within the supported range of math.hpp
+// (what validate() accepts), where no computation overflows.
+//
 // Degenerate answers (all documented and tested):
 // - Concentric circles: normal +x from the lexicographically smaller circle (so -x when that one
 //   is b), depth rA + rB.

@@ -41,13 +41,10 @@ namespace detail::g2 {
 template <class T>
 void requirePoints(std::span<const Vec2<T>> points, const char* fn) {
   if (points.empty()) throw Error(std::string(fn) + ": no points");
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (points[i].allFinite()) continue;
-    std::ostringstream msg;
-    msg << fn << ": points[" << i << "] = (" << points[i].x() << ", " << points[i].y()
-        << ") is not finite";
-    throw Error(msg.str());
-  }
+  const auto inRange = [](T x) { return detail::inSupportedRange(std::abs(double(x))); };
+  for (std::size_t i = 0; i < points.size(); ++i)  // the name is built only for the message
+    if (!(inRange(points[i].x()) && inRange(points[i].y())))
+      requireInRange(points[i], fn, ("points[" + std::to_string(i) + "]").c_str());
 }
 
 // The circle with a and b on opposite ends of a diameter.
@@ -59,22 +56,26 @@ CircleT<T> diameterCircle(const Vec2<T>& a, const Vec2<T>& b) {
 
 // The circle through a, b and c; for (nearly) collinear points, whose circumcircle is unbounded
 // or numerically meaningless, the diameter circle of the farthest pair (which then contains the
-// third). Computed relative to a; the radius is the largest distance to the three, so all three
-// are inside.
+// third). Computed relative to a, on offsets scaled exactly by a power of two to about 1 (the
+// center's offset is a ratio of cubes of lengths, which overflow float from lengths of about 7e12:
+// scaled, it has the unscaled bits wherever those are finite); the radius is the largest distance
+// to the three, so all three are inside.
 template <class T>
 CircleT<T> circumcircle(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c) {
-  const Vec2<T> ab = b - a, ac = c - a;
+  const T scale = detail::inversePowerOfTwo(
+      std::max((b - a).cwiseAbs().maxCoeff(), (c - a).cwiseAbs().maxCoeff()));
+  const Vec2<T> ab = (b - a) * scale, ac = (c - a) * scale;
   const T cross = ab.x() * ac.y() - ab.y() * ac.x();
   // |cross| = |ab| |ac| sin(angle at a); below the tolerance the angle is rounding noise.
   if (std::abs(cross) <= kGeometry2dTolerance<T> * ab.norm() * ac.norm()) {
-    const T dab = ab.norm(), dac = ac.norm(), dbc = (c - b).norm();
+    const T dab = ab.norm(), dac = ac.norm(), dbc = ((c - b) * scale).norm();
     if (dab >= dac && dab >= dbc) return diameterCircle(a, b);
     if (dac >= dbc) return diameterCircle(a, c);
     return diameterCircle(b, c);
   }
   const T ab2 = ab.squaredNorm(), ac2 = ac.squaredNorm();
   const Vec2<T> offset(ac.y() * ab2 - ab.y() * ac2, ab.x() * ac2 - ac.x() * ab2);
-  const Vec2<T> center = a + offset / (2 * cross);
+  const Vec2<T> center = a + (offset / (2 * cross)) / scale;
   return {center, std::max({(a - center).norm(), (b - center).norm(), (c - center).norm()})};
 }
 
@@ -92,7 +93,7 @@ bool inCircle(const CircleT<T>& c, const Vec2<T>& p) {
 }  // namespace detail::g2
 
 // The smallest axis-aligned rectangle containing every point (componentwise min and max: exact).
-// Throws Error on an empty set or a non-finite point.
+// Throws Error on an empty set or a point outside the supported range (math.hpp).
 template <class T>
 RectT<T> containingRect(std::span<const Vec2<T>> points) {
   detail::g2::requirePoints(points, "containingRect");
@@ -109,7 +110,7 @@ RectT<T> containingRect(const std::vector<Vec2<T>>& points) {
 }
 
 // The minimal enclosing circle (Welzl, see the header comment). Throws Error on an empty set or a
-// non-finite point. One point gives a zero-radius circle on it.
+// point outside the supported range (math.hpp). One point gives a zero-radius circle on it.
 template <class T>
 CircleT<T> containingCircle(std::span<const Vec2<T>> points) {
   detail::g2::requirePoints(points, "containingCircle");

@@ -16,8 +16,10 @@
 //   of their size; a result given in absolute coordinates (a closest point, a contact point) is of
 //   course only as precise as the representation of its coordinates (an ulp of 1e5 is 0.0078 in
 //   float).
-// - Queries do not validate; inputs are assumed finite and valid (call validate() where data
-//   enters, as the library's own constructors do).
+// - Queries do not validate; inputs are assumed valid and within the supported range of math.hpp
+//   (coordinates and sizes up to kMaxCoordinate = 1e18 in magnitude, a shape's center +- extent
+//   included), where they do not overflow: call validate() where data enters, as the library's
+//   own constructors and streams do.
 #pragma once
 
 #include <array>
@@ -159,15 +161,13 @@ RectT<T> boundingRect(const Segment2T<T>& s) {
 // ---- validation ------------------------------------------------------------------------------
 
 namespace detail::g2 {
+// Each coordinate finite and in the supported range (math.hpp): "where: field.x is 1e+20,
+// outside the supported range +-1e+18".
 template <class T>
-void requireFinite(const Vec2<T>& v, std::string_view where, const char* field) {
-  for (int a = 0; a < 2; ++a) {
-    if (std::isfinite(v[a])) continue;
-    std::ostringstream msg;
-    msg << where << ": " << field << '.' << (a == 0 ? 'x' : 'y') << " is " << v[a]
-        << ", not finite";
-    throw Error(msg.str());
-  }
+void requireInRange(const Vec2<T>& v, std::string_view where, const char* field) {
+  for (int a = 0; a < 2; ++a)  // the field's name is built only for the message
+    if (!detail::inSupportedRange(std::abs(double(v[a]))))
+      detail::requireInRange(v[a], where, std::string(field) + (a == 0 ? ".x" : ".y"));
 }
 template <class T>
 void requireFinite(T x, std::string_view where, const char* field) {
@@ -190,19 +190,19 @@ constexpr T kUnitTolerance = T(64) * std::numeric_limits<T>::epsilon();
 
 template <class T>
 void validate(const Vec2<T>& point, std::string_view where) {
-  detail::g2::requireFinite(point, where, "point");
+  detail::g2::requireInRange(point, where, "point");
 }
 
 template <class T>
 void validate(const Segment2T<T>& s, std::string_view where) {
-  detail::g2::requireFinite(s.start, where, "start");
-  detail::g2::requireFinite(s.end, where, "end");
+  detail::g2::requireInRange(s.start, where, "start");
+  detail::g2::requireInRange(s.end, where, "end");
 }
 
 template <class T>
 void validate(const Ray2T<T>& r, std::string_view where) {
-  detail::g2::requireFinite(r.origin, where, "origin");
-  detail::g2::requireFinite(r.direction, where, "direction");
+  detail::g2::requireInRange(r.origin, where, "origin");
+  detail::g2::requireInRange(r.direction, where, "direction");
   const T length = r.direction.norm();
   if (std::abs(length - T(1)) > detail::g2::kUnitTolerance<T>) {
     std::ostringstream msg;
@@ -213,15 +213,16 @@ void validate(const Ray2T<T>& r, std::string_view where) {
 
 template <class T>
 void validate(const CircleT<T>& c, std::string_view where) {
-  detail::g2::requireFinite(c.center, where, "center");
+  detail::g2::requireInRange(c.center, where, "center");
   detail::g2::requireFinite(c.radius, where, "radius");
   detail::g2::requireNonNegative(c.radius, where, "radius");
+  detail::requireReachInRange(c.center, Vec2<T>::Constant(c.radius), where, "center +- radius");
 }
 
 template <class T>
 void validate(const RectT<T>& r, std::string_view where) {
-  detail::g2::requireFinite(r.min, where, "min");
-  detail::g2::requireFinite(r.max, where, "max");
+  detail::g2::requireInRange(r.min, where, "min");
+  detail::g2::requireInRange(r.max, where, "max");
   for (int a = 0; a < 2; ++a) {
     if (r.min[a] <= r.max[a]) continue;
     const char axis = a == 0 ? 'x' : 'y';
@@ -234,20 +235,23 @@ void validate(const RectT<T>& r, std::string_view where) {
 
 template <class T>
 void validate(const OrientedRectT<T>& b, std::string_view where) {
-  detail::g2::requireFinite(b.center, where, "center");
-  detail::g2::requireFinite(b.halfExtents, where, "halfExtents");
+  detail::g2::requireInRange(b.center, where, "center");
+  detail::g2::requireInRange(b.halfExtents, where, "halfExtents");
   detail::g2::requireFinite(b.rotation, where, "rotation");
   detail::g2::requireNonNegative(b.halfExtents.x(), where, "halfExtents.x");
   detail::g2::requireNonNegative(b.halfExtents.y(), where, "halfExtents.y");
+  detail::requireReachInRange(b.center, Vec2<T>(b.axes().cwiseAbs() * b.halfExtents), where,
+                              "the rectangle (center +- |axes| halfExtents)");
 }
 
+// Any finite non-zero offset works: unitOr (math.hpp) scales it before taking its length.
 template <class T>
 Ray2T<T> Ray2T<T>::fromTo(const Vec2<T>& origin, const Vec2<T>& target) {
+  detail::g2::requireInRange(origin, "Ray2::fromTo", "origin");
+  detail::g2::requireInRange(target, "Ray2::fromTo", "target");
   const Vec2<T> d = target - origin;
-  const T length = d.norm();
-  if (!(length > 0) || !std::isfinite(length))
-    throw Error("Ray2::fromTo: origin and target coincide or are not finite");
-  return {origin, d / length};
+  if ((d.array() == 0).all()) throw Error("Ray2::fromTo: origin and target coincide");
+  return {origin, detail::unitOr(d, Vec2<T>::Zero().eval())};
 }
 
 }  // namespace simdphys

@@ -124,18 +124,22 @@ class QuadtreeT {
     slots_.clear();
   }
 
-  // Ids of the objects whose rectangle meets `query` (closed), increasing.
+  // Ids of the objects whose rectangle meets `query` (closed), increasing. Each query throws
+  // Error on an invalid argument (validate(): a NaN is not a silent "nothing there").
   std::vector<std::uint32_t> query(const RectT<T>& query) const {
+    validate(query, "Quadtree::query");
     return collect([&](const RectT<T>& cell) { return intersects(query, cell); },
                    [&](const RectT<T>& box) { return intersects(query, box); });
   }
   // Ids of the objects whose rectangle meets the circle (intersects(circle, rect)), increasing.
   std::vector<std::uint32_t> query(const CircleT<T>& circle) const {
+    validate(circle, "Quadtree::query");
     return collect([&](const RectT<T>& cell) { return circleMayMeet(circle, cell); },
                    [&](const RectT<T>& box) { return intersects(circle, box); });
   }
   // Ids of the objects whose rectangle contains the point (closed), increasing.
   std::vector<std::uint32_t> query(const Vec2<T>& point) const {
+    validate(point, "Quadtree::query");
     return collect([&](const RectT<T>& cell) { return simdphys::contains(cell, point); },
                    [&](const RectT<T>& box) { return simdphys::contains(box, point); });
   }

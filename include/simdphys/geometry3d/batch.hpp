@@ -13,6 +13,9 @@
 
 namespace simdphys {
 
+// Every query validates its argument (validate() of primitives.hpp: within the supported range of
+// math.hpp) and throws Error naming the function and field, e.g. "overlapping: radius is -1, ...".
+
 // The indices (ascending) of the spheres / boxes that `sphere` intersects (closed), written to
 // `out`; returns their number.
 std::size_t overlapping(const Sphere& sphere, const SphereStream& spheres,
@@ -28,7 +31,8 @@ std::size_t containing(const Vec3f& point, const BoxStream& boxes, std::vector<s
 void closestPoints(const Vec3f& point, const BoxStream& boxes, PointStream& out);
 
 // The first element a ray hits: the smallest t in [0, tMax] by raycast()'s rules (a ray that
-// starts inside a solid hits where it leaves), ties to the smaller index.
+// starts inside a solid hits where it leaves), ties to the smaller index. Throws Error if the ray
+// is invalid (validate(Ray)) or tMax is negative or NaN (+inf is the default: no limit).
 struct StreamHit {
   std::uint32_t index;
   float t;

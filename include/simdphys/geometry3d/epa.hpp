@@ -100,7 +100,7 @@ EpaCoreResult<T> epaCore(const SA& A, const SB& B, const Vec3<T>& origin, const 
   T scale = run.scale;
   for (int m = 0; m < run.simplex.size; ++m) scale = std::max(scale, run.simplex.p[m].w.norm());
   auto grow = [&](const Vec3<T>& d) {
-    SupportPoint<T> p = supportPoint(A, B, d, origin);
+    SupportPoint<T> p = supportPoint(A, B, d, origin, run.unit);
     scale = std::max(scale, p.w.norm());
     return p;
   };
@@ -321,17 +321,18 @@ std::optional<PenetrationT<ShapeScalarT<A>>> epa(const A& a, const B& b) {
   const Vec3<T>& origin = g.origin;
   PenetrationT<T> result;
   if (!run.overlap) {
-    result.normal = -run.v / core;
+    result.normal = -g.fromBToA();
     result.depth = std::max(T(0), ra + rb - core);
-    result.pointA = run.pointA() + ra * result.normal + origin;
-    result.pointB = run.pointB() - rb * result.normal + origin;
+    result.pointA = g.pointA() + ra * result.normal + origin;
+    result.pointB = g.pointB() - rb * result.normal + origin;
     return result;
   }
+  // EPA runs in GJK's scaled coordinates (GjkRun::unit); its lengths are unscaled here.
   const detail::EpaCoreResult<T> e = detail::epaCore(a, b, origin, run, g.towardB);
   result.normal = e.normal;
-  result.depth = e.depth + ra + rb;
-  result.pointA = e.pointA + ra * e.normal + origin;
-  result.pointB = e.pointB - rb * e.normal + origin;
+  result.depth = e.depth / run.unit + ra + rb;
+  result.pointA = e.pointA / run.unit + ra * e.normal + origin;
+  result.pointB = e.pointB / run.unit - rb * e.normal + origin;
   result.iterations = e.iterations;
   return result;
 }

@@ -1,7 +1,8 @@
 // GJK and EPA (the book's appendix): distance, closest points, intersection and penetration of
 // convex shapes given only by their support functions.
 //
-// The shapes are anything with a support function (support.hpp).
+// The shapes are anything with a support function (support.hpp), within the supported range of
+// math.hpp (their points up to kMaxCoordinate in magnitude); they are not validated here.
 //
 // gjkDistance is Gilbert-Johnson-Keerthi with the signed-volume sub-algorithm of Montanari,
 // Petrinic and Barbieri (2017): the closest point of each simplex to the origin is found from
@@ -15,6 +16,10 @@
 //   arithmetic, each from its own data (a box's center - offset, then + half extents), so shapes
 //   at 1e5 with sizes of 1e-2 keep float's relative precision in their distance; only the
 //   returned points carry the rounding of their absolute position.
+// - Scaled coordinates. The local coordinates are multiplied by a power of two that keeps the
+//   support points near 1 (GjkRun::unit, rescaled when a larger one appears), so the areas and
+//   volumes of the sub-algorithm and EPA (products of up to four lengths) neither overflow nor
+//   underflow for shapes anywhere in the supported range (math.hpp); the scaling is exact.
 // - Cores and radii. A sphere is its centre grown by its radius (a Minkowski sum adds its
 //   parts' radii): GJK and EPA run on the cores, which are polytopes for every shape here, and
 //   the radii are added at the end. Sphere-sphere is then exact, and EPA never has to
@@ -78,11 +83,13 @@ struct SupportPoint {
   Vec3<T> w, a, b;
 };
 
+// `unit` is the power of two the local coordinates are multiplied by (see GjkRun::unit).
 template <class T, class SA, class SB>
-SupportPoint<T> supportPoint(const SA& A, const SB& B, const Vec3<T>& d, const Vec3<T>& origin) {
+SupportPoint<T> supportPoint(const SA& A, const SB& B, const Vec3<T>& d, const Vec3<T>& origin,
+                             T unit) {
   SupportPoint<T> p;
-  p.a = coreSupport(A, d, origin);
-  p.b = coreSupport(B, Vec3<T>(-d), origin);
+  p.a = coreSupport(A, d, origin) * unit;
+  p.b = coreSupport(B, Vec3<T>(-d), origin) * unit;
   p.w = p.a - p.b;
   return p;
 }
@@ -257,6 +264,18 @@ struct GjkRun {
   bool overlap = false;  // the cores overlap or touch: v is (taken as) zero
   int iterations = 0;
   T scale = 0;  // the largest |w| seen: the size of the problem
+  // Every point of the run is in local coordinates times `unit`, a power of two that keeps the
+  // largest |w| near 1: the sub-algorithm's areas and volumes are products of up to four
+  // lengths, which would overflow float from lengths of about 4e9 (and underflow below 1e-9).
+  // Scaling by a power of two is exact, so the run is the unscaled one, bit for bit, wherever
+  // that one is finite.
+  T unit = 1;
+  // Multiplies every point by f (a power of two).
+  void rescale(T f) {
+    for (int m = 0; m < simplex.size; ++m)
+      simplex.p[m].w *= f, simplex.p[m].a *= f, simplex.p[m].b *= f;
+    v *= f, vv *= f * f, scale *= f, unit *= f;
+  }
   Vec3<T> pointA() const {
     Vec3<T> r = Vec3<T>::Zero();
     for (int m = 0; m < simplex.size; ++m) r += simplex.lambda[m] * simplex.p[m].a;
@@ -276,7 +295,8 @@ GjkRun<T> runGjk(const SA& A, const SB& B, const Vec3<T>& origin, Vec3<T> toward
   GjkRun<T> run;
   if (!(towardB.squaredNorm() > 0)) towardB = Vec3<T>::UnitX();
   run.simplex.size = 1;
-  run.simplex.p[0] = supportPoint(A, B, towardB, origin);
+  run.simplex.p[0] = supportPoint(A, B, towardB, origin, T(1));
+  run.rescale(inversePowerOfTwo(run.simplex.p[0].w.cwiseAbs().maxCoeff()));
   run.simplex.lambda[0] = 1;
   run.v = run.simplex.p[0].w;
   run.vv = run.v.squaredNorm();
@@ -289,8 +309,16 @@ GjkRun<T> runGjk(const SA& A, const SB& B, const Vec3<T>& origin, Vec3<T> toward
       break;
     }
     if (run.iterations >= kGjkMaxIterations) break;
-    const SupportPoint<T> w = supportPoint(A, B, Vec3<T>(-run.v), origin);
+    SupportPoint<T> w = supportPoint(A, B, Vec3<T>(-run.v), origin, run.unit);
     ++run.iterations;
+    // A support point far larger than the run's size so far, or all of them far below 1 (the
+    // first was zero): scale back to near 1.
+    const T m = std::max(w.w.cwiseAbs().maxCoeff(), run.scale);
+    if (m > T(65536) || (m > 0 && m < T(1) / T(65536))) {
+      const T f = inversePowerOfTwo(m);
+      run.rescale(f);
+      w.w *= f, w.a *= f, w.b *= f;
+    }
     run.scale = std::max(run.scale, w.w.norm());
     // |v| is an upper bound of the distance, v.w / |v| a lower one: stop when they agree.
     const T gap = run.vv - run.v.dot(w.w);
@@ -326,9 +354,14 @@ struct GjkSolution {
   Vec3<T> origin, towardB;  // a point of A (the local origin); B's reference point from it
   GjkRun<T> run;
   T ra = 0, rb = 0;  // the radii around the cores
-  T core = 0;        // the cores' distance (0 when they overlap)
+  T core = 0;        // the cores' distance (0 when they overlap), unscaled
+  T size = 0;        // run.scale unscaled
   // The shapes are within the touching tolerance of each other, or overlap.
-  bool touching() const { return core - ra - rb <= kTouchTolerance<T> * (run.scale + ra + rb); }
+  bool touching() const { return core - ra - rb <= kTouchTolerance<T> * (size + ra + rb); }
+  // The cores' closest points in local coordinates (unscaled), and the unit vector from B's to A's.
+  Vec3<T> pointA() const { return run.pointA() / run.unit; }
+  Vec3<T> pointB() const { return run.pointB() / run.unit; }
+  Vec3<T> fromBToA() const { return run.v / std::sqrt(run.vv); }
 };
 template <class A, class B>
 GjkSolution<ShapeScalarT<A>> solveGjk(const A& a, const B& b) {
@@ -339,7 +372,8 @@ GjkSolution<ShapeScalarT<A>> solveGjk(const A& a, const B& b) {
   g.towardB = referencePoint(b) - g.origin;
   g.run = runGjk(a, b, g.origin, g.towardB);
   g.ra = coreRadius(a), g.rb = coreRadius(b);
-  g.core = g.run.overlap ? T(0) : std::sqrt(g.run.vv);
+  g.core = g.run.overlap ? T(0) : std::sqrt(g.run.vv) / g.run.unit;
+  g.size = g.run.scale / g.run.unit;
   return g;
 }
 
@@ -356,7 +390,7 @@ GjkResultT<ShapeScalarT<A>> gjkDistance(const A& a, const B& b) {
   const detail::GjkRun<T>& run = g.run;
   const T ra = g.ra, rb = g.rb, core = g.core;
   const Vec3<T>& origin = g.origin;
-  const Vec3<T> ca = run.pointA(), cb = run.pointB();
+  const Vec3<T> ca = g.pointA(), cb = g.pointB();
   GjkResultT<T> result;
   result.iterations = run.iterations;
   const T distance = core - ra - rb;
@@ -374,7 +408,7 @@ GjkResultT<ShapeScalarT<A>> gjkDistance(const A& a, const B& b) {
     result.pointA = result.pointB = p + origin;
     return result;
   }
-  const Vec3<T> n = run.v / core;  // from B towards A
+  const Vec3<T> n = g.fromBToA();
   result.distance = distance;
   result.pointA = ca - ra * n + origin;
   result.pointB = cb + rb * n + origin;

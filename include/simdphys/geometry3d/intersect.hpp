@@ -18,6 +18,9 @@
 // - Positions are taken relative to one shape before anything is multiplied (see point_tests.hpp),
 //   so shapes of size 1e-2 at coordinates of 1e5 are tested at the precision of their size.
 //   Plane tests are the exception: a plane n.p + d = 0 is only as precise as d.
+// - Inputs are not validated: they are assumed valid and within the supported range of math.hpp
+//   (what validate() accepts), where no computation overflows (squared lengths of offsets stay
+//   below 1.2e37 in float) and shapes at opposite corners of the range are told apart.
 // - Degenerate input: a zero-radius sphere is a point, a zero-size box a point (or a segment or
 //   rectangle if only some extents are zero), a triangle with collinear vertices its longest edge
 //   (a point if they coincide); each test then answers for that point, segment or rectangle.

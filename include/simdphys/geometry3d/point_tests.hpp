@@ -21,7 +21,9 @@
 // - Degenerate but finite shapes have defined answers: a zero-radius sphere and a zero-size box
 //   are points, a zero-length segment is a point, a triangle whose vertices are collinear (within
 //   the tolerance) is the segment of its longest edge, or a point if they coincide.
-// Queries do not validate; inputs are assumed finite and valid (see validate()).
+// Queries do not validate; inputs are assumed valid and within the supported range of math.hpp
+// (coordinates and sizes up to kMaxCoordinate = 1e18, a shape's center +- extent included: what
+// validate() accepts), where no computation overflows. Outside it answers are unspecified.
 //
 // Where the book's code (Code/Geometry3D.cpp of the book's repository) is wrong:
 // - PointInSphere and the sphere tests use `<`: a point on the surface is outside, touching
@@ -422,10 +424,18 @@ SegmentClosestPointsT<T> closestPoints(const SegmentT<T>& first, const SegmentT<
       bestT = t;
     }
   };
-  const Vec3<T> n = d1.cross(d2);
+  // s and t are ratios of degree-4 products (|n|^2 ~ L^4 overflows float from L ~ 4e9): they are
+  // computed on the offsets scaled exactly by a power of two that brings the longer segment to
+  // about 1 (same bits where nothing overflows). Where r scaled overflows (|r| > 1e38 L), the
+  // stationary point is skipped: the side candidates are then within L of it, far below the
+  // rounding of r's coordinates.
+  const T scale =
+      detail::inversePowerOfTwo(std::max(d1.cwiseAbs().maxCoeff(), d2.cwiseAbs().maxCoeff()));
+  const Vec3<T> u1 = d1 * scale, u2 = d2 * scale, ur = r * scale;
+  const Vec3<T> n = u1.cross(u2);
   const T nn = n.squaredNorm();
-  if (n.norm() > kGeometryTolerance<T> * d1.norm() * d2.norm()) {
-    const T s = r.cross(d2).dot(n) / nn, t = r.cross(d1).dot(n) / nn;
+  if (n.norm() > kGeometryTolerance<T> * u1.norm() * u2.norm()) {
+    const T s = ur.cross(u2).dot(n) / nn, t = ur.cross(u1).dot(n) / nn;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) consider(s, t);
   }
   consider(T(0), detail::segmentParameter<T>(d2, first.start - second.start));

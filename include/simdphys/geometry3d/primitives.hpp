@@ -1,7 +1,9 @@
 // The 3D primitives of the book's chapters 7 and 11, as small value types on Eigen vectors,
 // templated on the scalar: `float` is the API, `double` the reference errors are measured
-// against. They are plain aggregates; `validate` checks one (finite values, non-negative sizes,
-// unit directions, orthonormal axes) and throws Error saying what and where. Streams and
+// against. They are plain aggregates; `validate` checks one (values within the supported range of
+// math.hpp, which also excludes NaN and inf, non-negative sizes, unit directions, orthonormal
+// axes) and throws Error saying what and where. A sphere or box must lie in the range as a whole
+// (its center +- its extent), a plane pass within kMaxCoordinate of the origin. Streams and
 // constructors of the library validate what they are given; a user building one by hand calls
 // `validate` where the data enters.
 #pragma once
@@ -128,22 +130,18 @@ RayT<U> cast(const RayT<T>& r) {
 // ---- validation ------------------------------------------------------------------------------
 
 namespace detail {
+// Each component finite and within the supported range (math.hpp), e.g. "where: min.y is 1e+20,
+// outside the supported range +-1e+18".
 template <class V>
 void requireFiniteField(const V& v, std::string_view where, const char* field) {
   constexpr char kAxis[] = {'x', 'y', 'z', 'w'};
-  for (int a = 0; a < int(v.size()); ++a) {
-    if (std::isfinite(v[a])) continue;
-    std::ostringstream msg;
-    msg << where << ": " << field << '.' << kAxis[a] << " is " << v[a] << ", not finite";
-    throw Error(msg.str());
-  }
+  for (int a = 0; a < int(v.size()); ++a)  // the field's name is built only for the message
+    if (!inSupportedRange(std::abs(double(v[a]))))
+      requireInRange(v[a], where, std::string(field) + '.' + kAxis[a]);
 }
 template <class T>
 void requireFiniteScalar(T x, std::string_view where, const char* field) {
-  if (std::isfinite(x)) return;
-  std::ostringstream msg;
-  msg << where << ": " << field << " is " << x << ", not finite";
-  throw Error(msg.str());
+  requireInRange(x, where, field);
 }
 // Tolerance for "unit length" and "orthonormal": a few rounding steps of a normalisation in T.
 template <class T>
@@ -167,10 +165,13 @@ void validate(const AabbT<T>& box, std::string_view where) {
 template <class T>
 void validate(const SphereT<T>& sphere, std::string_view where) {
   detail::requireFiniteField(sphere.center, where, "center");
-  if (std::isfinite(sphere.radius) && sphere.radius >= 0) return;
-  std::ostringstream msg;
-  msg << where << ": radius is " << sphere.radius << ", must be finite and >= 0";
-  throw Error(msg.str());
+  if (!(std::isfinite(sphere.radius) && sphere.radius >= 0)) {
+    std::ostringstream msg;
+    msg << where << ": radius is " << sphere.radius << ", must be finite and >= 0";
+    throw Error(msg.str());
+  }
+  detail::requireReachInRange(sphere.center, Vec3<T>::Constant(sphere.radius), where,
+                              "center +- radius");
 }
 
 template <class T>
@@ -211,6 +212,8 @@ void validate(const ObbT<T>& b, std::string_view where) {
   if (error > detail::kUnitTolerance<T> || b.axes.determinant() < 0)
     throw Error(std::string(where) + ": axes are not orthonormal and right-handed (|A^T A - I| = " +
                 std::to_string(double(error)) + ")");
+  detail::requireReachInRange(b.center, Vec3<T>(b.axes.cwiseAbs() * b.halfExtents), where,
+                              "the box (center +- |axes| halfExtents)");
 }
 
 template <class T>
@@ -220,22 +223,26 @@ void validate(const TriangleT<T>& t, std::string_view where) {
   detail::requireFiniteField(t.c, where, "c");
 }
 
+// Both accept any finite non-zero offset or normal (unitOr scales it before taking its length)
+// and check that the points are in the supported range and the plane passes within it.
 template <class T>
 RayT<T> RayT<T>::fromTo(const Vec3<T>& origin, const Vec3<T>& target) {
+  detail::requireFiniteField(origin, "Ray::fromTo", "origin");
+  detail::requireFiniteField(target, "Ray::fromTo", "target");
   const Vec3<T> d = target - origin;
-  const T length = d.norm();
-  if (!(length > 0) || !std::isfinite(length))
-    throw Error("Ray::fromTo: origin and target coincide or are not finite");
-  return {origin, d / length};
+  if ((d.array() == 0).all()) throw Error("Ray::fromTo: origin and target coincide");
+  return {origin, detail::unitOr(d, Vec3<T>::Zero().eval())};
 }
 
 template <class T>
 PlaneT<T> PlaneT<T>::fromPointNormal(const Vec3<T>& point, const Vec3<T>& normal) {
-  const T length = normal.norm();
-  if (!(length > 0) || !std::isfinite(length))
-    throw Error("Plane::fromPointNormal: the normal is zero or not finite");
-  const Vec3<T> n = normal / length;
-  return {n, -n.dot(point)};
+  detail::requireFiniteField(point, "Plane::fromPointNormal", "point");
+  if (!normal.allFinite()) throw Error("Plane::fromPointNormal: the normal is not finite");
+  if ((normal.array() == 0).all()) throw Error("Plane::fromPointNormal: the normal is zero");
+  const Vec3<T> n = detail::unitOr(normal, Vec3<T>::Zero().eval());
+  const PlaneT plane{n, -n.dot(point)};
+  validate(plane, "Plane::fromPointNormal");
+  return plane;
 }
 
 // Closed overlap of two boxes: boxes that only touch overlap.

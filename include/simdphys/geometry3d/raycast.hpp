@@ -6,8 +6,10 @@
 // - `raycast(shape, ray, tMax)` returns the first hit with t in [0, tMax] (closed), or nothing.
 //   t is the distance along the ray's unit direction and `point` is origin + t * direction
 //   (for an AABB the coordinate on the hit axis is then set to the face exactly and the others
-//   clamped into the box, so the point lies on the box). Rays are not validated here: validate
-//   them where they enter (a non-unit direction gives t in units of its length).
+//   clamped into the box, so the point lies on the box). Rays and shapes are not validated here:
+//   validate them where they enter (a non-unit direction gives t in units of its length); they
+//   are assumed within the supported range of math.hpp (what validate() accepts), where no
+//   computation overflows and the batch forms (batch.hpp) agree with these on every path.
 // - `normal` is unit and faces the ray: dot(normal, direction) <= 0, exactly for AABBs,
 //   triangles and plane raycasts, to rounding (a few eps) for spheres, OBBs and plane linecasts.
 // - Solids (sphere, AABB, OBB) are closed: touching counts. Along the ray the solid occupies an
@@ -110,13 +112,11 @@ namespace detail::rays {
 template <class T>
 inline constexpr T kInfinity = std::numeric_limits<T>::infinity();
 
-// v / |v| without overflow or underflow of |v|^2; `fallback` when v is zero or not finite.
+// v / |v| without overflow or underflow of |v|^2 (math.hpp's unitOr); `fallback` when v is zero
+// or not finite.
 template <class T>
 Vec3<T> unitOr(const Vec3<T>& v, const Vec3<T>& fallback) {
-  const T m = v.cwiseAbs().maxCoeff();
-  if (!(m > 0) || !std::isfinite(m)) return fallback;
-  const Vec3<T> s = v / m;
-  return s / s.norm();
+  return detail::unitOr(v, fallback);
 }
 
 // a * b - c * d with the sign exact when the rounded result is 0 (the only case in which the

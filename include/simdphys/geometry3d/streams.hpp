@@ -1,5 +1,6 @@
 // Streams of 3D primitives: one aligned, padded array per field (core.hpp). Each stream
-// validates what it is given and names the offending element; padding makes padded lanes inert
+// validates what it is given (validate() of primitives.hpp: finite, within the supported range of
+// math.hpp, sizes >= 0, ...) and names the offending element; padding makes padded lanes inert
 // (an empty box, a sphere of radius -inf), so kernels can run over whole vectors.
 #pragma once
 
@@ -87,7 +88,9 @@ class SphereStream : public StreamSet<4> {
 };
 
 // Boxes as centre and half extents, the layout of culling (n.c + d + |n|.h needs no
-// conversion, so no rounding is added to the inputs). Padding: extents -inf.
+// conversion, so no rounding is added to the inputs). push checks that the box, centre +- half
+// extents, lies in the supported range, so operator[]'s min and max are finite and in range.
+// Padding: extents -inf.
 class BoundsStream : public StreamSet<6> {
  public:
   BoundsStream() : StreamSet({0, 0, 0, -kPadInf, -kPadInf, -kPadInf}) {}
@@ -119,7 +122,7 @@ class TriangleStream : public StreamSet<9> {
 };
 
 // Oriented boxes: centre, half extents and the 3 x 3 axes (columns: the box's local x, y, z, as in
-// ObbT), each element validated like ObbT (validate: finite, extents >= 0, orthonormal and
+// ObbT), each element validated like ObbT (validate: in range, extents >= 0, orthonormal and
 // right-handed axes). Padding: a point box at the origin with identity axes. No value makes a
 // separating-axis test fail for every query (its arithmetic reads NaN and inf as "not
 // separated"), so this stream's padding is not inert by value: kernels mask lanes >= size().

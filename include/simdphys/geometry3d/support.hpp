@@ -94,14 +94,11 @@ using ShapeScalarT = typename ShapeScalar<std::remove_cvref_t<S>>::type;
 // segment's or hull's first vertex. Ties go to the first vertex.
 
 namespace detail {
-// direction / |direction|, computed after dividing by the largest |component| so tiny and huge
-// directions neither underflow nor overflow; zero (or NaN) gives zero.
+// direction / |direction| (math.hpp's unitOr: tiny and huge directions neither underflow nor
+// overflow); zero (or NaN) gives zero.
 template <class T>
 Vec3<T> unitOrZero(const Vec3<T>& d) {
-  const T m = d.cwiseAbs().maxCoeff();
-  if (!(m > 0) || !std::isfinite(m)) return Vec3<T>::Zero();
-  const Vec3<T> s = d / m;
-  return s / s.norm();
+  return unitOr(d, Vec3<T>::Zero().eval());
 }
 }  // namespace detail
 
