@@ -143,7 +143,9 @@ T inversePowerOfTwo(T m) {
   if (!(m > 0) || !std::isfinite(m)) return T(1);
   int e = 0;
   (void)std::frexp(m, &e);
-  return std::ldexp(T(1), -std::max(e, std::numeric_limits<T>::min_exponent));
+  // Clamped so that 2^-e and 2^e are normal numbers.
+  return std::ldexp(T(1), -std::clamp(e, std::numeric_limits<T>::min_exponent,
+                                      std::numeric_limits<T>::max_exponent - 2));
 }
 
 }  // namespace detail

@@ -92,17 +92,6 @@ bool degenerateTriangle(const Vec3<T>& normal, T longestSquared) {
   return normal.norm() <= kGeometryTolerance<T> * longestSquared;
 }
 
-// 2^-k for the power of two 2^k just above m (m > 0 finite), k kept where 2^-k and 2^k are
-// normal numbers; 1 for m = 0. Multiplying by it is exact (no rounding) unless the product
-// underflows.
-template <class T>
-T inversePowerOfTwo(T m) {
-  int k = 0;
-  std::frexp(m, &k);  // m = f 2^k with f in [0.5, 1)
-  return std::ldexp(T(1), -std::clamp(k, std::numeric_limits<T>::min_exponent,
-                                      std::numeric_limits<T>::max_exponent - 2));
-}
-
 // A triangle and a query point as offsets from the vertices, scaled by a power of two so that the
 // longest edge is about 1 (exact: the scaled computation rounds exactly as the unscaled one would
 // if it had an unbounded exponent). Products of up to four lengths (|n|^2, n.(e x ap)) then stay
