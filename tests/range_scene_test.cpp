@@ -123,16 +123,17 @@ TEST_P(RangeScene, MeshOverlapAtTheRangeEdgesEqualsBruteForce) {
   std::vector<std::uint32_t> every(mesh.size());
   for (std::uint32_t i = 0; i < mesh.size(); ++i) every[i] = i;
   EXPECT_EQ(bvh.overlapping(all), every);  // the range holds every triangle
-  // This sphere holds every vertex too (the farthest is 1.7e18 from the centre), but
-  // intersects(Triangle, Sphere) misses triangle 28 at this scale (geometry3d's part of issue 11):
-  // the tree must agree with that test.
-  const Sphere holdsAll{{0, 0, 0}, 2 * kRange};
-  EXPECT_EQ(bvh.overlapping(holdsAll), bruteOverlaps(mesh, holdsAll));
+  // The largest sphere in range, and the sphere tests through the tree against the test per
+  // triangle.
+  const Sphere largest{{0, 0, 0}, kRange};
+  EXPECT_EQ(bvh.overlapping(largest), bruteOverlaps(mesh, largest));
   RangeRandom r(7);
   for (int q = 0; q < 200; ++q) {
     const Aabb b = r.box();
     ASSERT_EQ(bvh.overlapping(b), bruteOverlaps(mesh, b)) << q;
-    const Sphere s{b.center(), r.size()};
+    // A sphere must lie in range as a whole: its radius at most the centre's distance to the edge.
+    const Vec3f c = b.center();
+    const Sphere s{c, std::min(r.size(), kRange - c.cwiseAbs().maxCoeff())};
     ASSERT_EQ(bvh.overlapping(s), bruteOverlaps(mesh, s)) << q;
   }
 }
@@ -225,8 +226,15 @@ TEST_P(RangeScene, OctreeAtTheRangeEdgesEqualsBruteForce) {
   for (int i = 0; i < 2000; ++i) list.push_back(r.box());
   list.push_back({Vec3f::Constant(kRange), Vec3f::Constant(kRange)});
   list.push_back({Vec3f::Constant(-kRange), Vec3f::Constant(-kRange)});
-  // Centre and half extents of a box whose ends are the range's: exact in float.
-  for (const Aabb& b : list) bounds.push(b.min * 0.5f + b.max * 0.5f, b.max * 0.5f - b.min * 0.5f);
+  // Centre and half extents of each box; where c + h rounds one ulp past the range's edge (a
+  // BoundsStream holds only boxes in range), the half extent one ulp less.
+  for (const Aabb& b : list) {
+    const Vec3f c = b.min * 0.5f + b.max * 0.5f;
+    Vec3f h = b.max * 0.5f - b.min * 0.5f;
+    for (int a = 0; a < 3; ++a)
+      while (std::abs(c[a]) + h[a] > kRange) h[a] = std::nextafter(h[a], 0.0f);
+    bounds.push(c, h);
+  }
   const Octree tree(bounds, {8, 8});
   for (int q = 0; q < 200; ++q) {
     const Aabb b = q == 0 ? Aabb{Vec3f::Constant(-kRange), Vec3f::Constant(kRange)} : r.box();

@@ -93,6 +93,7 @@ template <std::floating_point T>
 void requireInRange(T x, std::string_view where, std::string_view field) {
   if (inSupportedRange(std::abs(double(x)))) return;
   std::ostringstream msg;
+  msg.precision(9);  // enough to tell a value one ulp past the edge from the edge
   msg << where << ": " << field << " is " << x;
   if (std::isfinite(x))
     msg << ", outside the supported range +-" << kMaxCoordinate;
@@ -113,6 +114,7 @@ void requireReachInRange(const C& center, const R& reach, std::string_view where
     const double bound = std::abs(double(center[a])) + double(reach[a]);
     if (inSupportedRange(bound)) continue;
     std::ostringstream msg;
+    msg.precision(9);
     msg << where << ": " << what << " reaches " << bound << " on " << kAxis[a]
         << ", outside the supported range +-" << kMaxCoordinate;
     throw Error(msg.str());

@@ -121,7 +121,12 @@ std::string at(std::string_view where, std::size_t i) {
 
 void validateRay(const Ray& ray, float tMax, const std::string& where) {
   detail::requireFiniteField(ray.origin, where, "origin");
-  detail::requireFiniteField(ray.direction, where, "direction");
+  // A direction is not a point: any finite length (a linecast's is the segment, up to 2e18 on
+  // an axis); t is in its units.
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(ray.direction[a]))
+      throw Error(where + ": direction." + "xyz"[a] + " is " + std::to_string(ray.direction[a]) +
+                  ", not finite");
   if ((ray.direction.array() == 0).all()) throw Error(where + ": the direction is zero");
   if (!(tMax >= 0)) throw Error(where + ": tMax " + std::to_string(tMax) + " is negative or NaN");
 }

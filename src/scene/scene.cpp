@@ -2,6 +2,7 @@
 #include "simdphys/scene/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "simdphys/geometry3d/intersect.hpp"
@@ -107,8 +108,17 @@ void Scene::update() {
   BoundsStream fresh;
   fresh.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i) {
+    // Cut to the supported range: at its edge the bounds' rounding slack reaches past it, and
+    // every query is inside it, so the cut changes no answer.
+    const Vec3f edge = Vec3f::Constant(kMaxCoordinate);
     const Aabb b = transformBounds(localBounds(models_[i].shape), world_[i]);
-    fresh.push(b.center(), b.halfExtents());
+    const Aabb cut{b.min.cwiseMax(-edge), b.max.cwiseMin(edge)};
+    const Vec3f c = cut.min * 0.5f + cut.max * 0.5f;
+    Vec3f h = cut.max * 0.5f - cut.min * 0.5f;
+    // c + h can round one ulp past the edge; an ulp of h is far inside the bounds' slack.
+    for (int a = 0; a < 3; ++a)
+      while (std::abs(c[a]) + h[a] > kMaxCoordinate) h[a] = std::nextafter(h[a], 0.0f);
+    fresh.push(c, h);
   }
   std::vector<std::uint32_t> moved;
   if (indexed_ == n)
