@@ -13,6 +13,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <concepts>
 #include <initializer_list>
@@ -87,19 +88,25 @@ inline bool inSupportedRange(double magnitude) {
   return magnitude <= std::numeric_limits<float>::max() && float(magnitude) <= kMaxCoordinate;
 }
 
+// x as the shortest text that reads back as the same float (the range is a float range; a double
+// beyond float's range as the shortest double), so a value one ulp past the edge does not print
+// as the edge: 1e+20, 1.00000008e+18.
+inline std::string rangeText(double x) {
+  char text[32];
+  const float f = float(x);
+  const auto end = std::isfinite(f) || !std::isfinite(x) ? std::to_chars(text, text + 32, f).ptr
+                                                          : std::to_chars(text, text + 32, x).ptr;
+  return std::string(text, end);
+}
+
 // Throws Error unless |x| is in the supported range: "where: field is 1e+20, outside the
 // supported range +-1e+18" (or "..., not finite").
 template <std::floating_point T>
 void requireInRange(T x, std::string_view where, std::string_view field) {
   if (inSupportedRange(std::abs(double(x)))) return;
-  std::ostringstream msg;
-  msg.precision(9);  // enough to tell a value one ulp past the edge from the edge
-  msg << where << ": " << field << " is " << x;
-  if (std::isfinite(x))
-    msg << ", outside the supported range +-" << kMaxCoordinate;
-  else
-    msg << ", not finite";
-  throw Error(msg.str());
+  throw Error(std::string(where) + ": " + std::string(field) + " is " + rangeText(double(x)) +
+              (std::isfinite(x) ? ", outside the supported range +-" + rangeText(kMaxCoordinate)
+                                : ", not finite"));
 }
 
 // Throws Error unless the shape center +- reach (reach >= 0 per axis: a radius, a box's extent
@@ -113,11 +120,9 @@ void requireReachInRange(const C& center, const R& reach, std::string_view where
   for (int a = 0; a < int(center.size()); ++a) {
     const double bound = std::abs(double(center[a])) + double(reach[a]);
     if (inSupportedRange(bound)) continue;
-    std::ostringstream msg;
-    msg.precision(9);
-    msg << where << ": " << what << " reaches " << bound << " on " << kAxis[a]
-        << ", outside the supported range +-" << kMaxCoordinate;
-    throw Error(msg.str());
+    throw Error(std::string(where) + ": " + std::string(what) + " reaches " + rangeText(bound) +
+                " on " + kAxis[a] + ", outside the supported range +-" +
+                rangeText(kMaxCoordinate));
   }
 }
 
