@@ -29,10 +29,12 @@ struct Grid {
   int ny = 1, nz = 1;
   float originY = 0, originZ = 0, scaleY = 0, scaleZ = 0;
   // Monotonic in the coordinate, so the cell of a point inside a box lies within the box's cells.
-  // Clamped in float before the conversion: the offset overflows to inf for boxes spanning more
-  // than FLT_MAX, and converting a float beyond int's range is undefined.
+  // Clamped in float before the conversion, since converting a float beyond int's range (or NaN)
+  // is undefined: the offset overflows to inf for boxes spanning more than FLT_MAX, and the scale
+  // is inf for a denormal extent, where 0 * inf is NaN (cell 0, as for any offset not above 0).
   static int cell(float offset, float scale, int n) {
-    return int(std::clamp(offset * scale, 0.0f, float(n - 1)));
+    const float v = offset * scale;
+    return v > 0 ? int(std::min(v, float(n - 1))) : 0;
   }
   int cellY(float y) const { return cell(y - originY, scaleY, ny); }
   int cellZ(float z) const { return cell(z - originZ, scaleZ, nz); }

@@ -30,7 +30,11 @@ struct Bands {
   // Monotonic in y, so a rectangle's bands are those from band(minY) to band(maxY). Clamped in
   // float before the conversion: the offset overflows to inf for rectangles spanning more than
   // FLT_MAX, and converting a float beyond int's range is undefined.
-  int band(float y) const { return int(std::clamp((y - origin) * scale, 0.0f, float(count - 1))); }
+  // NaN-safe as PairFinder's grid cell (src/broadphase/pairs.cpp): 0 * inf for a denormal extent.
+  int band(float y) const {
+    const float v = (y - origin) * scale;
+    return v > 0 ? int(std::min(v, float(count - 1))) : 0;
+  }
 };
 
 Bands chooseBands(const RectStream& r, bool banded) {
