@@ -1,4 +1,4 @@
-// simdphys: everything in one include.
+// simdphys: everything in one include, every subject's public header.
 #pragma once
 
 #include "simdphys/broadphase.hpp"
@@ -9,4 +9,10 @@
 #include "simdphys/geometry2d/broadphase.hpp"
 #include "simdphys/geometry3d.hpp"
 #include "simdphys/math.hpp"
+#include "simdphys/mesh.hpp"
+#include "simdphys/mesh_bvh.hpp"
 #include "simdphys/scene.hpp"
+#include "simdphys/scene/camera.hpp"
+#include "simdphys/scene/model.hpp"
+#include "simdphys/scene/octree.hpp"
+#include "simdphys/scene/scene.hpp"
