@@ -3,8 +3,8 @@
 // stream (batch3d.cpp) and the mesh BVH's leaves (bvh_ray.cpp), so both agree bit for bit with
 // the scalar test: vertices moved into the ray's sheared frame, edge functions u, v, w (with the
 // scalar's exact recomputation for lanes where one rounds to zero, which decides points exactly
-// on an edge), then t = (sum of weighted depths) / det (barycentric where that overflows). Needs <hwy/highway.h>, hn, kernels.hpp
-// and raycast.hpp (differenceOfProducts).
+// on an edge), then t = (sum of weighted depths) / det (barycentric where that overflows). Needs
+// <hwy/highway.h>, hn, kernels.hpp and raycast.hpp (differenceOfProducts).
 
 // The hit test once the three vertices are in the ray's sheared frame: px, py (x, y after the
 // shear) and pz (the depth along kz, relative to the origin), one triangle and one ray per lane;
@@ -40,10 +40,9 @@ HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const h
   // The scalar's barycentric form where u * depth overflowed (near the range's edges only).
   const auto overflow = hn::Not(hn::IsFinite(scaled));
   if (HWY_UNLIKELY(!hn::AllFalse(d, overflow))) {
-    const auto bary =
-        hn::Add(hn::Add(hn::Mul(hn::Div(u, det), hn::Mul(sz, pz[0])),
-                        hn::Mul(hn::Div(w1, det), hn::Mul(sz, pz[1]))),
-                hn::Mul(hn::Div(w2, det), hn::Mul(sz, pz[2])));
+    const auto bary = hn::Add(hn::Add(hn::Mul(hn::Div(u, det), hn::Mul(sz, pz[0])),
+                                      hn::Mul(hn::Div(w1, det), hn::Mul(sz, pz[1]))),
+                              hn::Mul(hn::Div(w2, det), hn::Mul(sz, pz[2])));
     t = hn::IfThenElse(overflow, bary, t);
   }
   t = hn::Add(t, zero);  // -0 becomes +0

@@ -95,7 +95,7 @@ inline std::string rangeText(double x) {
   char text[32];
   const float f = float(x);
   const auto end = std::isfinite(f) || !std::isfinite(x) ? std::to_chars(text, text + 32, f).ptr
-                                                          : std::to_chars(text, text + 32, x).ptr;
+                                                         : std::to_chars(text, text + 32, x).ptr;
   return std::string(text, end);
 }
 
@@ -121,8 +121,7 @@ void requireReachInRange(const C& center, const R& reach, std::string_view where
     const double bound = std::abs(double(center[a])) + double(reach[a]);
     if (inSupportedRange(bound)) continue;
     throw Error(std::string(where) + ": " + std::string(what) + " reaches " + rangeText(bound) +
-                " on " + kAxis[a] + ", outside the supported range +-" +
-                rangeText(kMaxCoordinate));
+                " on " + kAxis[a] + ", outside the supported range +-" + rangeText(kMaxCoordinate));
   }
 }
 

@@ -24,32 +24,12 @@ OrientedRect orientedRect(fuzz::Input& in) {
   return {c, in.byte() < 240 ? Vec2f(e.cwiseAbs()) : e, in.scalar()};
 }
 
-template <class Stream, class Make>
-Stream streamOf(fuzz::Input& in, Make make) {
-  Stream s;
-  for (std::size_t i = 0, n = in.count(40); i < n; ++i) s.push(make(in));
-  return s;
-}
-
 std::string describe(const OrientedRect& r) {
   std::ostringstream o;
   o.precision(9);
   o << "center (" << r.center.transpose() << ") half (" << r.halfExtents.transpose()
     << ") rotation " << r.rotation;
   return o.str();
-}
-
-template <class Query>
-void indices(const char* what, Query query, const std::function<std::string()>& context = {}) {
-  fuzz::sameOnEveryPath(
-      what,
-      [&] {
-        std::vector<std::uint32_t> out;
-        const std::size_t n = query(out);
-        fuzz::require(n == out.size(), std::string(what) + ": the count is not the list's size");
-        return out;
-      },
-      context);
 }
 
 }  // namespace
@@ -61,21 +41,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     switch (in.byte() % 6) {
       case 0: {
-        const auto s = streamOf<CircleStream>(in, circle);
+        const auto s = fuzz::streamOf<CircleStream>(in, circle);
         const Circle q = circle(in);
-        indices("overlapping(Circle, CircleStream)", [&](auto& o) { return overlapping(q, s, o); });
+        fuzz::indices("overlapping(Circle, CircleStream)",
+                      [&](auto& o) { return overlapping(q, s, o); });
         break;
       }
       case 1: {
-        const auto s = streamOf<RectStream>(in, rect);
+        const auto s = fuzz::streamOf<RectStream>(in, rect);
         const Rect q = rect(in);
-        indices("overlapping(Rect, RectStream)", [&](auto& o) { return overlapping(q, s, o); });
+        fuzz::indices("overlapping(Rect, RectStream)",
+                      [&](auto& o) { return overlapping(q, s, o); });
         break;
       }
       case 2: {
-        const auto s = streamOf<OrientedRectStream>(in, orientedRect);
+        const auto s = fuzz::streamOf<OrientedRectStream>(in, orientedRect);
         const OrientedRect q = orientedRect(in);
-        indices(
+        fuzz::indices(
             "overlapping(OrientedRect, OrientedRectStream)",
             [&](auto& o) { return overlapping(q, s, o); },
             [&] {
@@ -92,22 +74,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       }
       case 3: {
-        const auto s = streamOf<CircleStream>(in, circle);
+        const auto s = fuzz::streamOf<CircleStream>(in, circle);
         const Vec2f p = in.vec2();
-        indices("containing(point, CircleStream)", [&](auto& o) { return containing(p, s, o); });
+        fuzz::indices("containing(point, CircleStream)",
+                      [&](auto& o) { return containing(p, s, o); });
         break;
       }
       case 4: {
-        const auto s = streamOf<RectStream>(in, rect);
+        const auto s = fuzz::streamOf<RectStream>(in, rect);
         const Vec2f p = in.vec2();
-        indices("containing(point, RectStream)", [&](auto& o) { return containing(p, s, o); });
+        fuzz::indices("containing(point, RectStream)",
+                      [&](auto& o) { return containing(p, s, o); });
         break;
       }
       default: {
-        const auto s = streamOf<OrientedRectStream>(in, orientedRect);
+        const auto s = fuzz::streamOf<OrientedRectStream>(in, orientedRect);
         const Vec2f p = in.vec2();
-        indices("containing(point, OrientedRectStream)",
-                [&](auto& o) { return containing(p, s, o); });
+        fuzz::indices("containing(point, OrientedRectStream)",
+                      [&](auto& o) { return containing(p, s, o); });
         break;
       }
     }

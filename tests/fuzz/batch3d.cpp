@@ -37,23 +37,6 @@ Triangle triangle(fuzz::Input& in) {
   return {a, b, in.vec3()};
 }
 
-template <class Stream, class Make>
-Stream streamOf(fuzz::Input& in, Make make) {
-  Stream s;
-  for (std::size_t i = 0, n = in.count(40); i < n; ++i) s.push(make(in));
-  return s;
-}
-
-template <class Query>
-void indices(const char* what, Query query) {
-  fuzz::sameOnEveryPath(what, [&] {
-    std::vector<std::uint32_t> out;
-    const std::size_t n = query(out);
-    fuzz::require(n == out.size(), std::string(what) + ": the count is not the list's size");
-    return out;
-  });
-}
-
 // A ray query's input and the reference path's answer, for a finding's message.
 template <class Stream>
 std::string describe(const Ray& r, float tMax, const Stream& s) {
@@ -98,33 +81,35 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     switch (in.byte() % 9) {
       case 0: {
-        const auto s = streamOf<SphereStream>(in, sphere);
+        const auto s = fuzz::streamOf<SphereStream>(in, sphere);
         const Sphere q = sphere(in);
-        indices("overlapping(Sphere, SphereStream)",
-                [&](auto& out) { return overlapping(q, s, out); });
+        fuzz::indices("overlapping(Sphere, SphereStream)",
+                      [&](auto& out) { return overlapping(q, s, out); });
         break;
       }
       case 1: {
-        const auto s = streamOf<BoxStream>(in, box);
+        const auto s = fuzz::streamOf<BoxStream>(in, box);
         const Sphere q = sphere(in);
-        indices("overlapping(Sphere, BoxStream)",
-                [&](auto& out) { return overlapping(q, s, out); });
+        fuzz::indices("overlapping(Sphere, BoxStream)",
+                      [&](auto& out) { return overlapping(q, s, out); });
         break;
       }
       case 2: {
-        const auto s = streamOf<ObbStream>(in, obb);
+        const auto s = fuzz::streamOf<ObbStream>(in, obb);
         const Obb q = obb(in);
-        indices("overlapping(Obb, ObbStream)", [&](auto& out) { return overlapping(q, s, out); });
+        fuzz::indices("overlapping(Obb, ObbStream)",
+                      [&](auto& out) { return overlapping(q, s, out); });
         break;
       }
       case 3: {
-        const auto s = streamOf<BoxStream>(in, box);
+        const auto s = fuzz::streamOf<BoxStream>(in, box);
         const Vec3f p = in.vec3();
-        indices("containing(point, BoxStream)", [&](auto& out) { return containing(p, s, out); });
+        fuzz::indices("containing(point, BoxStream)",
+                      [&](auto& out) { return containing(p, s, out); });
         break;
       }
       case 4: {
-        const auto s = streamOf<BoxStream>(in, box);
+        const auto s = fuzz::streamOf<BoxStream>(in, box);
         const Vec3f p = in.vec3();
         fuzz::sameOnEveryPath("closestPoints(point, BoxStream)", [&] {
           PointStream out;
@@ -137,21 +122,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       }
       case 5: {
-        const auto s = streamOf<BoxStream>(in, box);
+        const auto s = fuzz::streamOf<BoxStream>(in, box);
         const Ray r{in.vec3(), in.direction()};
         const float t = tMax(in);
         rays("raycast(Ray, BoxStream)", r, t, s);
         break;
       }
       case 6: {
-        const auto s = streamOf<SphereStream>(in, sphere);
+        const auto s = fuzz::streamOf<SphereStream>(in, sphere);
         const Ray r{in.vec3(), in.direction()};
         const float t = tMax(in);
         rays("raycast(Ray, SphereStream)", r, t, s);
         break;
       }
       default: {
-        const auto s = streamOf<TriangleStream>(in, triangle);
+        const auto s = fuzz::streamOf<TriangleStream>(in, triangle);
         const Ray r{in.vec3(), in.direction()};
         const float t = tMax(in);
         rays("raycast(Ray, TriangleStream)", r, t, s);

@@ -149,4 +149,27 @@ const R* resultOf(const Outcome<R>& o) {
   return std::get_if<R>(&o);
 }
 
+// A stream of up to 40 elements, each decoded by `make`.
+template <class Stream, class Make>
+Stream streamOf(Input& in, Make make) {
+  Stream s;
+  for (std::size_t i = 0, n = in.count(40); i < n; ++i) s.push(make(in));
+  return s;
+}
+
+// A batch query that fills a list of indices and returns its count: the same on every path, and
+// the count the list's size.
+template <class Query>
+void indices(const char* what, Query query, const std::function<std::string()>& context = {}) {
+  sameOnEveryPath(
+      what,
+      [&] {
+        std::vector<std::uint32_t> out;
+        const std::size_t n = query(out);
+        require(n == out.size(), std::string(what) + ": the count is not the list's size");
+        return out;
+      },
+      context);
+}
+
 }  // namespace simdphys::fuzz
