@@ -35,9 +35,9 @@ class RayPacket {
       hits_[i] = Closest(r.tMax);
       bound_[i] = r.tMax;
       for (int a = 0; a < 3; ++a) origin_[a][i] = r.origin[a], inverse_[a][i] = r.inverse[a];
-      sx_[i] = r.watertight.sx, sy_[i] = r.watertight.sy, sz_[i] = r.watertight.sz;
+      sx_[i] = r.sx, sy_[i] = r.sy, sz_[i] = r.sz;
       // The shear's frame: kz, and whether kx and ky are swapped (a negative d[kz]).
-      const int frame = 2 * r.watertight.kz + (r.watertight.kx != (r.watertight.kz + 1) % 3);
+      const int frame = 2 * r.kz + (r.kx != (r.kz + 1) % 3);
       frame_[i] = float(frame);
       if (present) frames_ |= 1u << frame, finite_ = finite_ && r.finiteInverse;
     }
@@ -53,37 +53,47 @@ class RayPacket {
       if (index_[i] != kAbsentLane) out[index_[i]] = hits_[i].result();
   }
 
- private:
+  // The packet as a walker of walkBvh (bvh_walk-inl.hpp). kFinite: every ray's inverse direction
+  // is finite, so Min/Max bound the slabs (raySlab's rule).
   struct Entry {
     std::uint32_t ref;
     float key;      // the smallest entry distance over the lanes: nearest subtrees first
     float dist[N];  // per lane, the scaled entry distance, +inf where the ray misses the box
   };
+  template <bool kFinite>
+  class Walk {
+   public:
+    using Entry = RayPacket::Entry;
+    explicit Walk(RayPacket& p) : p_(p) {}
+    static std::uint32_t ref(const Entry& e) { return e.ref; }
+    // No active lane; or few, which then walk the subtree alone.
+    bool skip(const Entry& e) {
+      const std::uint32_t active = p_.activeLanes(e.dist);
+      if (__builtin_popcount(active) > kSwitchThreshold) return false;
+      for (std::uint32_t m = active; m != 0; m &= m - 1) p_.single(__builtin_ctz(m), e.ref);
+      return true;
+    }
+    bool leaf(const Entry& e) {
+      p_.leaf(e.ref, e.dist);
+      return false;
+    }
+    int expand(const BvhNode& n, const Entry& e, Entry* stack, int top) {
+      return p_.template expand<kFinite>(n, e.dist, stack, top);
+    }
 
-  // kFinite: every ray's inverse direction is finite, so Min/Max bound the slabs (RayCore's rule).
+   private:
+    RayPacket& p_;
+  };
+
+ private:
   template <bool kFinite>
   void trace() {
-    Entry stack[BvhNode::kStackSize + BvhNode::kWidth];
-    if (mesh_.nodeCount == 0) return;
-    stack[0].ref = 0;
-    stack[0].key = 0;
-    std::fill_n(stack[0].dist, N, 0.0f);
-    int top = 1;
-    alignas(64) float dist[N];
-    while (top > 0) {
-      const Entry& e = stack[--top];
-      const std::uint32_t ref = e.ref;
-      std::copy_n(e.dist, N, dist);  // the slot is reused by the children
-      const std::uint32_t active = activeLanes(dist);
-      if (active == 0) continue;
-      if (__builtin_popcount(active) <= kSwitchThreshold) {
-        for (std::uint32_t m = active; m != 0; m &= m - 1) single(__builtin_ctz(m), ref);
-      } else if (BvhNode::isLeaf(ref)) {
-        leaf(ref, dist);
-      } else {
-        top = expand<kFinite>(mesh_.nodes[ref], dist, stack, top);
-      }
-    }
+    Entry root;
+    root.ref = 0;
+    root.key = 0;
+    std::fill_n(root.dist, N, 0.0f);
+    Walk<kFinite> walk(*this);
+    walkBvh(mesh_.nodes, mesh_.nodeCount, walk, root);
   }
 
   // The lanes whose ray enters the subtree before its bound, as bits.
@@ -129,26 +139,18 @@ class RayPacket {
       for (std::size_t h = 0; h < N; h += kLanes) {
         const auto bound = hn::Load(d, bound_ + h);
         const auto active = hn::Le(hn::LoadU(d, dist + h), bound);
-        auto enter = zero, exit = bound;
+        hn::Vec<D> nearFace[3], farFace[3], origin[3], inverse[3], enter;
         for (int a = 0; a < 3; ++a) {
-          const auto o = hn::Load(d, origin_[a] + h), inv = hn::Load(d, inverse_[a] + h);
+          origin[a] = hn::Load(d, origin_[a] + h), inverse[a] = hn::Load(d, inverse_[a] + h);
           // The near face by the sign bit of the direction (that of its inverse, -0 giving
           // -inf), per lane, as RayCore picks it per ray.
-          const auto negative = hn::Lt(inv, zero);
+          const auto negative = hn::Lt(inverse[a], zero);
           const auto boxLo = hn::Set(d, lo[a][k]), boxHi = hn::Set(d, hi[a][k]);
-          const auto tNear = hn::Mul(hn::Sub(hn::IfThenElse(negative, boxHi, boxLo), o), inv);
-          const auto tFar = hn::Mul(hn::Sub(hn::IfThenElse(negative, boxLo, boxHi), o), inv);
-          if constexpr (kFinite) {
-            enter = hn::Max(tNear, enter);
-            exit = hn::Min(tFar, exit);
-          } else {  // comparisons: a NaN must leave the bound as it is
-            enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
-            exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
-          }
+          nearFace[a] = hn::IfThenElse(negative, boxHi, boxLo);
+          farFace[a] = hn::IfThenElse(negative, boxLo, boxHi);
         }
-        enter = hn::Mul(enter, hn::Set(d, detail::kEnterScale));
         const auto hit =
-            hn::And(active, hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale))));
+            hn::And(active, raySlab<kFinite>(d, nearFace, farFace, origin, inverse, bound, enter));
         const auto kept = hn::IfThenElse(hit, enter, inf);
         hn::StoreU(kept, d, kid.dist + h);
         if (hn::AllFalse(d, hit)) continue;

@@ -5,28 +5,31 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <cstdint>
+#include <limits>
+
 #include "simd/kernels.hpp"
-#include "simdphys/bvh.hpp"
+#include "simdphys/bvh_types.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+#include "core/bvh_walk-inl.hpp"
 #include "simd/box_overlap-inl.hpp"
 #include "simd/compress-inl.hpp"
-#include "src/bvh/traverse-inl.hpp"
 
 // Expands a node for a box query without a branch per slot: one comparison per row gives the
 // slots that overlap; of those, child nodes are compressed onto the stack and leaves handed to
 // the sink as a vector of references with a mask.
 template <class Sink>
-class OverlapExpander {
+class OverlapWalk : public NodeWalk {
  public:
-  OverlapExpander(const BvhNode* nodes, const Box& q, Sink& sink)
+  OverlapWalk(const BvhNode* nodes, const Box& q, Sink& sink)
       : nodes_(nodes), sink_(sink), overlap_(d_, q) {}
 
-  int operator()(const BvhNode& n, std::uint32_t* stack, int top) {
+  int expand(const BvhNode& n, std::uint32_t, std::uint32_t* stack, int top) {
     for (std::size_t h = 0; h < BvhNode::kWidth; h += hn::Lanes(d_)) {
       auto hit =
           hn::RebindMask(du_, overlap_(d_, n.minX, n.minY, n.minZ, n.maxX, n.maxY, n.maxZ, h));
@@ -84,15 +87,18 @@ struct CollectLeaves {
 std::uint64_t BvhCountOverlaps(const BvhNode* nodes, std::size_t nodeCount, const Box* queries,
                                std::size_t nQueries) {
   CountLeaves count;
-  for (std::size_t q = 0; q < nQueries; ++q)
-    traverseBvh(nodes, nodeCount, OverlapExpander<CountLeaves>(nodes, queries[q], count));
+  for (std::size_t q = 0; q < nQueries; ++q) {
+    OverlapWalk<CountLeaves> walk(nodes, queries[q], count);
+    walkBvh(nodes, nodeCount, walk, 0u);
+  }
   return count.total;
 }
 
 void BvhQuery(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
               std::vector<std::uint32_t>& out) {
   CollectLeaves collect{out};
-  traverseBvh(nodes, nodeCount, OverlapExpander<CollectLeaves>(nodes, query, collect));
+  OverlapWalk<CollectLeaves> walk(nodes, query, collect);
+  walkBvh(nodes, nodeCount, walk, 0u);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -12,21 +12,23 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
+#include "core/traversal_ray.hpp"
 #include "simd/kernels.hpp"
-#include "simdphys/bvh.hpp"
-#include "simdphys/mesh_bvh.hpp"
-#include "src/bvh/mesh_ray.hpp"
+#include "simdphys/bvh_types.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+#include "core/bvh_walk-inl.hpp"
+#include "core/closest_hits-inl.hpp"
+#include "core/ray_slab-inl.hpp"
 #include "simd/compress-inl.hpp"
 #include "simd/watertight-inl.hpp"
-#include "src/bvh/ray_traverse-inl.hpp"
 
 // A node's rows as offsets in floats from its start (BvhNode: minX minY minZ maxX maxY maxZ).
 constexpr int kRow = BvhNode::kWidth;
@@ -54,22 +56,15 @@ class RayCore {
     const float* rows = n.minX;
     int count = 0;
     for (std::size_t h = 0; h < BvhNode::kWidth; h += hn::Lanes(d)) {
-      auto enter = hn::Zero(d);
-      auto exit = hn::Set(d, bound);
+      hn::Vec<D> nearFace[3], farFace[3], origin[3], inverse[3], enter;
       for (int a = 0; a < 3; ++a) {
-        const auto o = hn::Set(d, ray_.origin[a]), inv = hn::Set(d, ray_.inverse[a]);
-        const auto tNear = hn::Mul(hn::Sub(hn::Load(d, rows + near_[a] + h), o), inv);
-        const auto tFar = hn::Mul(hn::Sub(hn::Load(d, rows + far_[a] + h), o), inv);
-        if constexpr (kFinite) {
-          enter = hn::Max(tNear, enter);
-          exit = hn::Min(tFar, exit);
-        } else {  // comparisons: a NaN must leave the bound as it is
-          enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
-          exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
-        }
+        nearFace[a] = hn::Load(d, rows + near_[a] + h);
+        farFace[a] = hn::Load(d, rows + far_[a] + h);
+        origin[a] = hn::Set(d, ray_.origin[a]);
+        inverse[a] = hn::Set(d, ray_.inverse[a]);
       }
-      enter = hn::Mul(enter, hn::Set(d, detail::kEnterScale));
-      const auto hit = hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale)));
+      const auto hit =
+          raySlab<kFinite>(d, nearFace, farFace, origin, inverse, hn::Set(d, bound), enter);
       if (hn::AllFalse(d, hit)) continue;
       const auto child = hn::Load(du, n.child + h);
       const int kept = int(compressStore32(du, child, hn::RebindMask(du, hit), refs + count));
@@ -90,8 +85,7 @@ class RayCore {
     for (std::size_t h = 0; h < count; h += hn::Lanes(d)) {
       hn::Vec<D> t;
       auto hit = watertightHits(
-          d, ray_.query, sink_.bound(),
-          [&](int q, int k) { return hn::Load(d, block.v[q][k] + h); }, t);
+          d, ray_, sink_.bound(), [&](int q, int k) { return hn::Load(d, block.v[q][k] + h); }, t);
       // Lanes past the count repeat the leaf's first triangle: not offered twice.
       hit = hn::And(hit, hn::FirstN(d, count - h));
       if (hn::AllFalse(d, hit)) continue;

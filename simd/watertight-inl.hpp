@@ -4,7 +4,15 @@
 // the scalar test: vertices moved into the ray's sheared frame, edge functions u, v, w (with the
 // scalar's exact recomputation for lanes where one rounds to zero, which decides points exactly
 // on an edge), then t = (sum of weighted depths) / det (barycentric where that overflows). Needs
-// <hwy/highway.h>, hn, kernels.hpp and raycast.hpp (differenceOfProducts).
+// <hwy/highway.h> and hn.
+
+// a b - c d, recomputed in double where the float result is zero: the scalar test's
+// differenceOfProducts (raycast.hpp) for floats, so that a point exactly on an edge is decided the
+// same way in every lane.
+inline float exactEdge(float a, float b, float c, float d) {
+  const float r = a * b - c * d;
+  return r != 0 ? r : float(double(a) * double(b) - double(c) * double(d));
+}
 
 // The hit test once the three vertices are in the ray's sheared frame: px, py (x, y after the
 // shear) and pz (the depth along kz, relative to the origin), one triangle and one ray per lane;
@@ -24,9 +32,9 @@ HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const h
     alignas(64) float X[3][kMaxLanes], Y[3][kMaxLanes], U[3][kMaxLanes];
     for (int q = 0; q < 3; ++q) hn::Store(px[q], d, X[q]), hn::Store(py[q], d, Y[q]);
     for (std::size_t k = 0; k < hn::Lanes(d); ++k) {
-      U[0][k] = detail::rays::differenceOfProducts(X[2][k], Y[1][k], Y[2][k], X[1][k]);
-      U[1][k] = detail::rays::differenceOfProducts(X[0][k], Y[2][k], Y[0][k], X[2][k]);
-      U[2][k] = detail::rays::differenceOfProducts(X[1][k], Y[0][k], Y[1][k], X[0][k]);
+      U[0][k] = exactEdge(X[2][k], Y[1][k], Y[2][k], X[1][k]);
+      U[1][k] = exactEdge(X[0][k], Y[2][k], Y[0][k], X[2][k]);
+      U[2][k] = exactEdge(X[1][k], Y[0][k], Y[1][k], X[0][k]);
     }
     u = hn::Load(d, U[0]), w1 = hn::Load(d, U[1]), w2 = hn::Load(d, U[2]);
   }
@@ -50,10 +58,11 @@ HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const h
   return hn::And(hit, hn::And(hn::Ge(t, zero), hn::Le(t, tMax)));
 }
 
-// The lanes whose triangle the ray hits with t in [0, tMax]; their t in `t`. `vertex(q, k)`
-// loads coordinate k of vertex q (a, b, c) of the lanes' triangles.
-template <class D, class VertexRow>
-HWY_INLINE hn::Mask<D> watertightHits(D d, const WatertightQuery& r, float tMax, VertexRow vertex,
+// The lanes whose triangle the ray hits with t in [0, tMax]; their t in `t`. `r` is the ray's
+// precomputation: a WatertightQuery (kernels.hpp) or anything with its fields (TraversalRay).
+// `vertex(q, k)` loads coordinate k of vertex q (a, b, c) of the lanes' triangles.
+template <class D, class Query, class VertexRow>
+HWY_INLINE hn::Mask<D> watertightHits(D d, const Query& r, float tMax, VertexRow vertex,
                                       hn::Vec<D>& t) {
   const float origin[3] = {r.ox, r.oy, r.oz};
   const auto sx = hn::Set(d, r.sx), sy = hn::Set(d, r.sy);

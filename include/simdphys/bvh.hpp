@@ -14,33 +14,10 @@
 #include <span>
 #include <vector>
 
+#include "simdphys/bvh_types.hpp"
 #include "simdphys/geometry3d.hpp"
 
 namespace simdphys {
-
-struct alignas(64) BvhNode {
-  static constexpr int kWidth = 8;
-  // child[k]: the index of a child node, or kLeaf | (count - 1) << kCountShift | first for a
-  // leaf of `count` primitives starting at `first`. Unused slots are kEmpty with empty
-  // bounds (min = +inf, max = -inf): no finite test passes them, and the box traversals skip
-  // kEmpty whatever the query.
-  static constexpr std::uint32_t kLeaf = 1u << 31;
-  static constexpr int kCountShift = 27;
-  static constexpr std::uint32_t kFirstMask = (1u << kCountShift) - 1;
-  static constexpr std::uint32_t kEmpty = ~0u;
-  // Depth bound the build guarantees, and the traversal stack it implies: each level leaves at
-  // most kWidth - 1 siblings on the stack.
-  static constexpr int kMaxDepth = 72;
-  static constexpr int kStackSize = kMaxDepth * (kWidth - 1) + 1;
-
-  float minX[kWidth], minY[kWidth], minZ[kWidth];
-  float maxX[kWidth], maxY[kWidth], maxZ[kWidth];
-  std::uint32_t child[kWidth];
-
-  static bool isLeaf(std::uint32_t c) { return (c & kLeaf) != 0; }
-  static std::uint32_t leafFirst(std::uint32_t c) { return c & kFirstMask; }
-  static std::uint32_t leafCount(std::uint32_t c) { return ((c & ~kLeaf) >> kCountShift) + 1; }
-};
 
 // How a tree is built from primitive bounds.
 struct BvhBuildOptions {

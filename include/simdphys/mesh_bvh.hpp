@@ -22,26 +22,11 @@
 #include <vector>
 
 #include "simdphys/bvh.hpp"
+#include "simdphys/bvh_types.hpp"
 #include "simdphys/geometry3d/streams.hpp"
 #include "simdphys/mesh.hpp"
 
 namespace simdphys {
-
-struct alignas(64) TriangleBlock {
-  static constexpr int kWidth = 8;
-  float v[3][3][kWidth];  // v[vertex a, b, c][coordinate x, y, z][lane]
-  std::uint32_t id[kWidth];
-};
-
-inline constexpr std::uint32_t kNoHit = ~0u;
-// Relative window within which two hits tie (W2): t <= tMin * kTieWindow.
-inline constexpr float kTieWindow = 1.0f + 1e-6f;
-
-struct MeshHit {
-  std::uint32_t id = kNoHit;  // the triangle's index in the mesh, kNoHit for a miss
-  float t = std::numeric_limits<float>::infinity();
-  bool hit() const { return id != kNoHit; }
-};
 
 // Rays as SoA: origin, direction (any non-zero length; t is in units of it) and tMax (>= 0).
 // Padding rays have tMax = -inf and hit nothing.

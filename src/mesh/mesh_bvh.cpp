@@ -9,44 +9,29 @@
 
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
+#include "src/bvh/scalar_walk.hpp"
 #include "src/mesh/mesh_internal.hpp"
 
 namespace simdphys {
 
-// ---- the reference path: the same traversal, a scalar core ----------------------------------
+// ---- the reference path: the same walk, a scalar core -------------------------------------
 namespace reference {
-#include "src/bvh/ray_traverse-inl.hpp"
-#include "src/bvh/traverse-inl.hpp"
 
 template <class Sink>
 class RayCore {
  public:
   RayCore(std::span<const TriangleBlock> blocks, const detail::TraversalRay& ray, Sink& sink)
-      : blocks_(blocks), ray_(ray), sink_(sink) {}
+      : blocks_(blocks), ray_(ray), sink_(sink) {
+    // The scalar triangle test's ray: the frame the kernels use (its direction is not read).
+    watertight_.origin = {ray.ox, ray.oy, ray.oz};
+    watertight_.kx = ray.kx, watertight_.ky = ray.ky, watertight_.kz = ray.kz;
+    watertight_.sx = ray.sx, watertight_.sy = ray.sy, watertight_.sz = ray.sz;
+  }
 
   float bound() const { return sink_.bound(); }
 
-  // The SIMD kernel's slab test, slot by slot, with the same operations.
   int expand(const BvhNode& n, float bound, std::uint32_t* refs, float* dists) const {
-    const float* lo[3] = {n.minX, n.minY, n.minZ};
-    const float* hi[3] = {n.maxX, n.maxY, n.maxZ};
-    int count = 0;
-    for (int k = 0; k < BvhNode::kWidth; ++k) {
-      float enter = 0, exit = bound;
-      for (int a = 0; a < 3; ++a) {
-        const float nearFace = ray_.negative[a] ? hi[a][k] : lo[a][k];
-        const float farFace = ray_.negative[a] ? lo[a][k] : hi[a][k];
-        const float tNear = (nearFace - ray_.origin[a]) * ray_.inverse[a];
-        const float tFar = (farFace - ray_.origin[a]) * ray_.inverse[a];
-        if (tNear > enter) enter = tNear;
-        if (tFar < exit) exit = tFar;
-      }
-      enter *= detail::kEnterScale;
-      if (!(enter <= exit * detail::kExitScale)) continue;
-      refs[count] = n.child[k];
-      dists[count++] = enter;
-    }
-    return count;
+    return expandRay(n, ray_, bound, refs, dists);
   }
 
   bool leaf(std::uint32_t ref) {
@@ -55,7 +40,7 @@ class RayCore {
       const Triangle tri{{b.v[0][0][l], b.v[0][1][l], b.v[0][2][l]},
                          {b.v[1][0][l], b.v[1][1][l], b.v[1][2][l]},
                          {b.v[2][0][l], b.v[2][1][l], b.v[2][2][l]}};
-      const auto h = intersectTriangle(ray_.watertight, tri, sink_.bound());
+      const auto h = intersectTriangle(watertight_, tri, sink_.bound());
       if (!h) continue;
       if constexpr (Sink::kAnyHit) {
         sink_.found = true;
@@ -70,6 +55,7 @@ class RayCore {
  private:
   std::span<const TriangleBlock> blocks_;
   const detail::TraversalRay& ray_;
+  WatertightRay watertight_;
   Sink& sink_;
 };
 
@@ -87,28 +73,6 @@ bool anyHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
   RayCore<Any> core(blocks, ray, any);
   traverseRay(bvh.nodes().data(), bvh.nodes().size(), core);
   return any.found;
-}
-
-// The leaves whose slot box overlaps `q` (closed): visit(first, count) for each.
-template <class Visit>
-void overlappingLeaves(const Bvh& bvh, const Aabb& q, Visit visit) {
-  traverseBvh(bvh.nodes().data(), bvh.nodes().size(),
-              [&](const BvhNode& n, std::uint32_t* stack, int top) {
-                for (int k = 0; k < BvhNode::kWidth; ++k) {
-                  // An empty slot passes no query, not even one with infinite bounds.
-                  const bool hit = n.child[k] != BvhNode::kEmpty && n.minX[k] <= q.max.x() &&
-                                   q.min.x() <= n.maxX[k] && n.minY[k] <= q.max.y() &&
-                                   q.min.y() <= n.maxY[k] && n.minZ[k] <= q.max.z() &&
-                                   q.min.z() <= n.maxZ[k];
-                  if (!hit) continue;
-                  const std::uint32_t c = n.child[k];
-                  if (BvhNode::isLeaf(c))
-                    visit(BvhNode::leafFirst(c), BvhNode::leafCount(c));
-                  else
-                    stack[top++] = c;
-                }
-                return top;
-              });
 }
 }  // namespace reference
 
@@ -219,10 +183,11 @@ bool MeshBvh::linetest(const Segment& s) const {
   requireInReach(boundsOf(s), "MeshBvh::linetest");
   if (!detail::rays::isPointSegment(s) && occluded(Ray{s.start, s.direction()}, 1.0f)) return true;
   bool found = false;
-  reference::overlappingLeaves(bvh_, boundsOf(s), [&](std::uint32_t first, std::uint32_t count) {
-    for (std::uint32_t i = 0; i < count && !found; ++i)
-      found = simdphys::linetest(mesh_.triangle(bvh_.order()[first + i]), s);
-  });
+  reference::overlappingLeaves(
+      bvh_.nodes(), boundsOf(s), [&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t i = 0; i < count && !found; ++i)
+          found = simdphys::linetest(mesh_.triangle(bvh_.order()[first + i]), s);
+      });
   return found;
 }
 
@@ -243,7 +208,7 @@ std::vector<std::uint32_t> MeshBvh::overlappingShape(const Shape& shape, const c
                       bounds.max.cwiseAbs().maxCoeff() + extent_;
   const float margin = 8 * kGeometryTolerance<float> * scale;
   const Aabb wide{bounds.min.array() - margin, bounds.max.array() + margin};
-  reference::overlappingLeaves(bvh_, wide, [&](std::uint32_t first, std::uint32_t count) {
+  reference::overlappingLeaves(bvh_.nodes(), wide, [&](std::uint32_t first, std::uint32_t count) {
     for (std::uint32_t i = 0; i < count; ++i) {
       const std::uint32_t id = bvh_.order()[first + i];
       if (intersects(mesh_.triangle(id), shape)) ids.push_back(id);

@@ -4,9 +4,9 @@
 
 #include <span>
 
+#include "core/traversal_ray.hpp"
 #include "simd/kernels.hpp"
 #include "simdphys/mesh_bvh.hpp"
-#include "src/bvh/mesh_ray.hpp"
 
 namespace simdphys {
 

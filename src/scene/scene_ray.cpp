@@ -5,28 +5,10 @@
 #include <string>
 
 #include "simdphys/scene/scene.hpp"
+#include "src/bvh/scalar_walk.hpp"
 
 namespace simdphys {
 namespace {
-
-// Where the ray enters the box [lo, hi], if it does before `limit` (t >= 0). An axis the ray is
-// parallel to is tested directly (its division would give 0 / 0 on a face).
-bool enters(const Vec3f& lo, const Vec3f& hi, const Ray& ray, float limit, float& enter) {
-  float t0 = 0, t1 = limit;
-  for (int a = 0; a < 3; ++a) {
-    const float o = ray.origin[a], d = ray.direction[a];
-    if (d == 0) {
-      if (o < lo[a] || o > hi[a]) return false;
-      continue;
-    }
-    float tn = (lo[a] - o) / d, tf = (hi[a] - o) / d;
-    if (tn > tf) std::swap(tn, tf);
-    t0 = std::max(t0, tn);
-    t1 = std::min(t1, tf);
-  }
-  enter = t0;
-  return t0 <= t1;
-}
 
 // The order of hits: the smaller t, then the smaller model index. A miss (model kNoModel) at the
 // caller's tMax loses to a hit at the same t.
@@ -34,9 +16,37 @@ bool closer(const ModelHit& a, const ModelHit& b) {
   return a.t < b.t || (a.t == b.t && a.model < b.model);
 }
 
-Aabb boxOf(const BvhNode& n, int k) {
-  return {{n.minX[k], n.minY[k], n.minZ[k]}, {n.maxX[k], n.maxY[k], n.maxZ[k]}};
-}
+// The scene's walk of its top-level tree (a box tree: one model a leaf), as the mesh's: the same
+// node test, nearest box first, a box farther than the closest hit found since skipped. The world
+// boxes are widened beyond rounding (transformBounds), so a model's hit is never before its box's
+// entry.
+class ModelRayCore {
+ public:
+  ModelRayCore(const Scene& scene, const Ray& ray, float tMax) : scene_(scene), ray_(ray) {
+    detail::setSlabs(slabs_, ray.origin.x(), ray.origin.y(), ray.origin.z(), ray.direction.x(),
+                     ray.direction.y(), ray.direction.z(), tMax);
+    best_.t = tMax;
+  }
+  float bound() const { return best_.t; }
+  int expand(const BvhNode& n, float bound, std::uint32_t* refs, float* dists) const {
+    return reference::expandRay(n, slabs_, bound, refs, dists);
+  }
+  bool leaf(std::uint32_t ref) {
+    const std::uint32_t m = BvhNode::leafFirst(ref);
+    if (auto hit = simdphys::raycast(scene_.placed(m), ray_)) {
+      hit->model = m;
+      if (closer(*hit, best_)) best_ = *hit;
+    }
+    return false;
+  }
+  const ModelHit& best() const { return best_; }
+
+ private:
+  const Scene& scene_;
+  const Ray& ray_;
+  detail::TraversalRay slabs_;
+  ModelHit best_;
+};
 
 }  // namespace
 
@@ -44,77 +54,50 @@ ModelHit Scene::raycast(const Ray& ray, float tMax) const {
   requireUpToDate("Scene::raycast");
   validate(ray, "Scene::raycast");
   if (!(tMax >= 0)) throw Error("Scene::raycast: tMax must be >= 0");
-  ModelHit best;
-  best.t = tMax;
-  const auto nodes = bvh_.nodes();
-  if (nodes.empty()) return best;
-  // A node enters the stack with the t where the ray enters its box; popped, it is skipped if a
-  // hit closer than that was found meanwhile. The world boxes are widened beyond rounding
-  // (transformBounds), so a model's hit is never before its box's entry.
-  std::vector<std::pair<float, std::uint32_t>> stack{{0.0f, 0u}};
-  std::array<std::pair<float, std::uint32_t>, BvhNode::kWidth> near;
-  while (!stack.empty()) {
-    const auto [enter, index] = stack.back();
-    stack.pop_back();
-    if (enter > best.t) continue;
-    const BvhNode& node = nodes[index];
-    int count = 0;
-    for (int k = 0; k < BvhNode::kWidth; ++k) {
-      const std::uint32_t c = node.child[k];
-      float t;
-      if (c == BvhNode::kEmpty) continue;
-      const Aabb box = boxOf(node, k);
-      if (!enters(box.min, box.max, ray, best.t, t)) continue;
-      if (!BvhNode::isLeaf(c)) {
-        near[count++] = {t, c};
-        continue;
-      }
-      const std::uint32_t m = BvhNode::leafFirst(c);
-      if (auto hit = simdphys::raycast(placed(m), ray)) {
-        hit->model = m;
-        if (closer(*hit, best)) best = *hit;
-      }
-    }
-    // Farthest first onto the stack, so the nearest box is searched next (insertion sort: <= 8).
-    for (int k = 1; k < count; ++k)
-      for (int j = k; j > 0 && near[j - 1].first < near[j].first; --j)
-        std::swap(near[j - 1], near[j]);
-    for (int k = 0; k < count; ++k) stack.push_back(near[k]);
-  }
-  return best;
+  ModelRayCore core(*this, ray, tMax);
+  reference::traverseRay(bvh_.nodes().data(), bvh_.nodes().size(), core);
+  return core.best();
 }
 
 namespace {
 
-// The rays of a stream as the box filter reads them: origins and inverse directions, SoA. A zero
-// direction component becomes +-1e-30 before inverting, so the products below never meet
-// 0 * inf: a ray parallel to a slab gets a huge t of the right sign (or 0 on the slab's plane),
-// which keeps every box the ray can touch (the filter may keep a few it cannot; never loses one).
+// The rays of a stream as the box filter reads them: origins and inverse directions, SoA.
 struct RaySlabs {
   std::array<std::vector<float>, 3> origin, inverse;
+  bool finite = true;  // every inverse finite: raySlab's Max/Min form
   explicit RaySlabs(const RayStream& rays) {
     for (int a = 0; a < 3; ++a) {
       const float* o = rays.origin(a).data();
       const float* d = rays.direction(a).data();
       origin[a].assign(o, o + rays.size());
       inverse[a].resize(rays.size());
-      for (std::size_t i = 0; i < rays.size(); ++i)
-        inverse[a][i] = 1.0f / (d[i] == 0 ? std::copysign(1e-30f, d[i]) : d[i]);
+      for (std::size_t i = 0; i < rays.size(); ++i) {
+        inverse[a][i] = 1.0f / d[i];
+        finite = finite && std::isfinite(inverse[a][i]);
+      }
     }
   }
-  // keep[i] = 1 where ray i enters the box before limit[i]: a plain loop the compiler
-  // vectorises.
+  // keep[i] = 1 where ray i enters the box before limit[i] (the walk's slab test, so it keeps
+  // every box the ray can touch): a plain loop the compiler vectorises.
+  void enters(const Aabb& box, const float* limit, std::uint8_t* keep) const {
+    if (finite)
+      enters<true>(box, limit, keep);
+    else
+      enters<false>(box, limit, keep);
+  }
+  template <bool kFinite>
   void enters(const Aabb& box, const float* limit, std::uint8_t* keep) const {
     const std::size_t n = origin[0].size();
     for (std::size_t i = 0; i < n; ++i) {
-      float t0 = 0, t1 = limit[i];
+      float o[3], inv[3], nearFace[3], farFace[3], enter;
       for (int a = 0; a < 3; ++a) {
-        const float tn = (box.min[a] - origin[a][i]) * inverse[a][i];
-        const float tf = (box.max[a] - origin[a][i]) * inverse[a][i];
-        t0 = std::max(t0, std::min(tn, tf));
-        t1 = std::min(t1, std::max(tn, tf));
+        o[a] = origin[a][i], inv[a] = inverse[a][i];
+        // The near face by the direction's sign bit, that of its inverse (-0 gives -inf).
+        nearFace[a] = inv[a] < 0 ? box.max[a] : box.min[a];
+        farFace[a] = inv[a] < 0 ? box.min[a] : box.max[a];
       }
-      keep[i] = t0 <= t1;
+      keep[i] = reference::raySlab<kFinite>(reference::ScalarLane{}, nearFace, farFace, o, inv,
+                                            limit[i], enter);
     }
   }
 };

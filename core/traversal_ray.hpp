@@ -1,13 +1,11 @@
-// A ray as the mesh traversal takes it, prepared once per ray and shared by the reference path
-// (src/mesh/) and the SIMD kernels (simd/bvh_ray.cpp), so both test the same boxes and triangles
-// with the same numbers.
+// A ray as the BVH walks take it, prepared once per ray and shared by the reference path (src/)
+// and the SIMD kernels (simd/bvh_ray.cpp), so both test the same boxes and triangles with the
+// same numbers: the slab test's origin and inverse direction, and the watertight triangle test's
+// shear (Woop, Benthin, Wald 2013; raycast.hpp's WatertightRay, computed the same way).
 #pragma once
 
 #include <cmath>
-#include <limits>
-
-#include "simd/kernels.hpp"
-#include "simdphys/geometry3d/raycast.hpp"
+#include <utility>
 
 namespace simdphys::detail {
 
@@ -23,15 +21,19 @@ inline constexpr float kEnterScale = 1.0f - 0x1p-20f;
 inline constexpr float kExitScale = 1.0f + 0x1p-20f;
 
 struct TraversalRay {
-  WatertightRay watertight;     // the scalar triangle test's precomputation
-  simd::WatertightQuery query;  // the same, as the kernels take it
-  float origin[3], inverse[3];
-  bool negative[3];    // sign bit of the direction: the near face is the max face
-  bool finiteInverse;  // no direction component is zero, so no slab product can be NaN
+  // The watertight test's frame (the fields of simd::WatertightQuery): origin, the axes kx, ky,
+  // kz (kz the direction's largest component) and the shear sx, sy, sz.
+  float ox, oy, oz;
+  int kx, ky, kz;
+  float sx, sy, sz;
   float tMax;
+  // The slab test's: origin, 1 / direction, and its sign bit (the near face is the max face).
+  float origin[3], inverse[3];
+  bool negative[3];
+  bool finiteInverse;  // no direction component is zero, so no slab product can be NaN
 };
 
-// The fields the node test reads: origin, inverse, negative, finiteInverse, tMax.
+// The fields the slab test reads: origin, inverse, negative, finiteInverse, tMax.
 inline void setSlabs(TraversalRay& r, float ox, float oy, float oz, float dx, float dy, float dz,
                      float tMax) {
   const float o[3] = {ox, oy, oz}, d[3] = {dx, dy, dz};
@@ -50,9 +52,19 @@ inline void setSlabs(TraversalRay& r, float ox, float oy, float oz, float dx, fl
 [[gnu::always_inline]] inline TraversalRay traversalRay(float ox, float oy, float oz, float dx,
                                                         float dy, float dz, float tMax) {
   TraversalRay r;
-  r.watertight = WatertightRay(Vec3f(ox, oy, oz), Vec3f(dx, dy, dz));
-  const WatertightRay& w = r.watertight;
-  r.query = {ox, oy, oz, w.kx, w.ky, w.kz, w.sx, w.sy, w.sz, tMax};
+  // WatertightRay's frame: kz the first axis of largest |d|; kx, ky swapped for a negative d[kz]
+  // so the triangle's winding does not flip.
+  const float d[3] = {dx, dy, dz};
+  int kz = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::abs(d[a]) > std::abs(d[kz])) kz = a;
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (d[kz] < 0) std::swap(kx, ky);
+  r.ox = ox, r.oy = oy, r.oz = oz;
+  r.kx = kx, r.ky = ky, r.kz = kz;
+  r.sx = d[kx] / d[kz];
+  r.sy = d[ky] / d[kz];
+  r.sz = 1.0f / d[kz];
   setSlabs(r, ox, oy, oz, dx, dy, dz, tMax);
   return r;
 }

@@ -1,0 +1,72 @@
+// The sinks of a ray walk: the closest hit under W2's rule (mesh_bvh.hpp), and any hit. Included
+// inside a namespace per path (src/mesh/ for the reference, each SIMD target's namespace in
+// simd/bvh_ray.cpp; no include guard, by design). The includer provides MeshHit and kTieWindow
+// (bvh_types.hpp), <algorithm> and <limits>.
+
+// The closest hit under W2's rule: the smallest t, and among the hits within kTieWindow of it the
+// smallest id. The hits inside the window are kept (up to kMaxTies; beyond, the farthest, then the
+// largest ids, give way), since a nearer hit found later narrows the window and may drop its winner
+// while keeping another. `bound` is what the traversal culls against: a hit beyond it cannot
+// change the answer.
+class ClosestHits {
+ public:
+  static constexpr int kMaxTies = 16;
+  explicit ClosestHits(float tMax) : tMax_(tMax), bound_(tMax) {}
+  // A ray that hits nothing (tMax = -inf), to be assigned a real one (arrays of rays in packets).
+  ClosestHits() : ClosestHits(-std::numeric_limits<float>::infinity()) {}
+
+  float bound() const { return bound_; }
+
+  // A hit; ignored if beyond bound() (a hit tested against an older, wider bound).
+  void offer(float t, std::uint32_t id) {
+    if (t > bound_) return;
+    if (t < tMin_) {
+      tMin_ = t;
+      bound_ = std::min(tMax_, t * ::simdphys::kTieWindow);
+      int kept = 0;
+      for (int k = 0; k < count_; ++k)
+        if (ties_[k].t <= bound_) ties_[kept++] = ties_[k];
+      count_ = kept;
+    }
+    if (count_ < kMaxTies) {
+      ties_[count_++] = {id, t};
+      return;
+    }
+    // Full: the worst entry (farthest, then largest id) gives way to a better one, so equal-t
+    // ties keep the smallest ids.
+    int worst = 0;
+    for (int k = 1; k < count_; ++k)
+      if (worse(ties_[k], ties_[worst])) worst = k;
+    if (worse(ties_[worst], {id, t})) ties_[worst] = {id, t};
+  }
+
+  // The winner: id kNoHit and t = inf if nothing was hit.
+  ::simdphys::MeshHit result() const {
+    ::simdphys::MeshHit best;
+    for (int k = 0; k < count_; ++k)
+      if (ties_[k].id < best.id) best = ties_[k];
+    return best;
+  }
+
+ private:
+  // Candidates are ordered by t, then id.
+  static bool worse(const ::simdphys::MeshHit& a, const ::simdphys::MeshHit& b) {
+    return a.t > b.t || (a.t == b.t && a.id > b.id);
+  }
+  float tMax_, bound_;
+  float tMin_ = std::numeric_limits<float>::infinity();
+  int count_ = 0;
+  ::simdphys::MeshHit ties_[kMaxTies];  // the hits inside the window
+};
+
+// The two sinks of a traversal: the closest hit, and any hit (which stops at the first).
+struct Closest : ClosestHits {
+  using ClosestHits::ClosestHits;
+  static constexpr bool kAnyHit = false;
+};
+struct Any {
+  static constexpr bool kAnyHit = true;
+  float tMax;
+  bool found = false;
+  float bound() const { return tMax; }
+};

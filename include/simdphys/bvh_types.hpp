@@ -1,0 +1,53 @@
+// The BVH's plain types, without Eigen: the node, a mesh leaf's block of triangles and a mesh
+// hit. Part of the API (bvh.hpp and mesh_bvh.hpp include it) and the one public header the SIMD
+// kernels read (simd/bvh_*.cpp), so the kernels compile no Eigen.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+namespace simdphys {
+
+struct alignas(64) BvhNode {
+  static constexpr int kWidth = 8;
+  // child[k]: the index of a child node, or kLeaf | (count - 1) << kCountShift | first for a
+  // leaf of `count` primitives starting at `first`. Unused slots are kEmpty with empty
+  // bounds (min = +inf, max = -inf): no finite test passes them, and the box traversals skip
+  // kEmpty whatever the query.
+  static constexpr std::uint32_t kLeaf = 1u << 31;
+  static constexpr int kCountShift = 27;
+  static constexpr std::uint32_t kFirstMask = (1u << kCountShift) - 1;
+  static constexpr std::uint32_t kEmpty = ~0u;
+  // Depth bound the build guarantees, and the traversal stack it implies: each level leaves at
+  // most kWidth - 1 siblings on the stack.
+  static constexpr int kMaxDepth = 72;
+  static constexpr int kStackSize = kMaxDepth * (kWidth - 1) + 1;
+
+  float minX[kWidth], minY[kWidth], minZ[kWidth];
+  float maxX[kWidth], maxY[kWidth], maxZ[kWidth];
+  std::uint32_t child[kWidth];
+
+  static bool isLeaf(std::uint32_t c) { return (c & kLeaf) != 0; }
+  static std::uint32_t leafFirst(std::uint32_t c) { return c & kFirstMask; }
+  static std::uint32_t leafCount(std::uint32_t c) { return ((c & ~kLeaf) >> kCountShift) + 1; }
+};
+
+// A mesh leaf's triangles (mesh_bvh.hpp): up to 8, one per lane.
+struct alignas(64) TriangleBlock {
+  static constexpr int kWidth = 8;
+  float v[3][3][kWidth];  // v[vertex a, b, c][coordinate x, y, z][lane]
+  std::uint32_t id[kWidth];
+};
+
+inline constexpr std::uint32_t kNoHit = ~0u;
+// Relative window within which two hits tie (W2): t <= tMin * kTieWindow.
+inline constexpr float kTieWindow = 1.0f + 1e-6f;
+
+// A ray's closest triangle of a mesh (mesh_bvh.hpp's rule).
+struct MeshHit {
+  std::uint32_t id = kNoHit;  // the triangle's index in the mesh, kNoHit for a miss
+  float t = std::numeric_limits<float>::infinity();
+  bool hit() const { return id != kNoHit; }
+};
+
+}  // namespace simdphys
