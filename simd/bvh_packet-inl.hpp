@@ -160,7 +160,7 @@ class RayPacket {
       if (!any) continue;
       kid.ref = n.child[k];
       kid.key = hn::GetLane(key);
-      prefetch(kid.ref);
+      prefetch(mesh_, kid.ref);
       ++count;
     }
     // Insertion sort by key onto the stack, farthest first: the nearest is popped next.
@@ -217,13 +217,6 @@ class RayPacket {
         }
       }
     }
-  }
-
-  void prefetch(std::uint32_t ref) const {
-    if (BvhNode::isLeaf(ref))
-      hwy::Prefetch(mesh_.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
-    else
-      hwy::Prefetch(mesh_.nodes + ref);
   }
 
   const MeshView& mesh_;

@@ -33,6 +33,15 @@ namespace hn = hwy::HWY_NAMESPACE;
 // A node's rows as offsets in floats from its start (BvhNode: minX minY minZ maxX maxY maxZ).
 constexpr int kRow = BvhNode::kWidth;
 
+// Large meshes miss the cache: the first line of what a walk will visit (a node's x rows, a
+// block's x coordinates) is fetched while the rest is tested.
+HWY_INLINE void prefetch(const MeshView& mesh, std::uint32_t ref) {
+  if (BvhNode::isLeaf(ref))
+    hwy::Prefetch(mesh.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
+  else
+    hwy::Prefetch(mesh.nodes + ref);
+}
+
 // kFinite: the ray's inverse direction is finite on every axis (the common case), so no slab
 // product is NaN and plain Min/Max bound the interval.
 template <class Sink, bool kFinite>
@@ -69,9 +78,7 @@ class RayCore {
       const auto child = hn::Load(du, n.child + h);
       const int kept = int(compressStore32(du, child, hn::RebindMask(du, hit), refs + count));
       compressStore32(d, enter, hit, dists + count);
-      // Large meshes miss the cache: fetch the first line of what will be visited (a node's
-      // x rows, a block's x coordinates) while the rest is tested.
-      for (int k = count; k < count + kept; ++k) prefetch(refs[k]);
+      for (int k = count; k < count + kept; ++k) prefetch(mesh_, refs[k]);
       count += kept;
     }
     return count;
@@ -107,13 +114,6 @@ class RayCore {
   }
 
  private:
-  void prefetch(std::uint32_t ref) const {
-    if (BvhNode::isLeaf(ref))
-      hwy::Prefetch(mesh_.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
-    else
-      hwy::Prefetch(mesh_.nodes + ref);
-  }
-
   const MeshView& mesh_;
   const detail::TraversalRay& ray_;
   Sink& sink_;

@@ -95,6 +95,14 @@ void validateRay(const Ray& ray, float tMax, const std::string& where) {
   if (!(tMax >= 0)) throw Error(where + ": tMax " + std::to_string(tMax) + " is negative or NaN");
 }
 
+// The kernels take rays as a stream: one ray is a stream of one.
+template <class Kernel>
+void withRaysView(const Ray& ray, const float& tMax, Kernel kernel) {
+  const float o[3] = {ray.origin.x(), ray.origin.y(), ray.origin.z()};
+  const float d[3] = {ray.direction.x(), ray.direction.y(), ray.direction.z()};
+  kernel(simd::RaysView{{o, o + 1, o + 2}, {d, d + 1, d + 2}, &tMax, 1});
+}
+
 detail::TraversalRay traversal(const Ray& r, float tMax) {
   return detail::traversalRay(r.origin.x(), r.origin.y(), r.origin.z(), r.direction.x(),
                               r.direction.y(), r.direction.z(), tMax);
@@ -114,22 +122,20 @@ Ray RayStream::operator[](std::size_t i) const {
 MeshHit MeshBvh::raycast(const Ray& ray, float tMax) const {
   validateRay(ray, tMax, "MeshBvh::raycast");
   if (referencePathActive()) return reference::closestHit(bvh_, blocks_, traversal(ray, tMax));
-  const float o[3] = {ray.origin.x(), ray.origin.y(), ray.origin.z()};
-  const float d[3] = {ray.direction.x(), ray.direction.y(), ray.direction.z()};
-  const simd::RaysView v{{o, o + 1, o + 2}, {d, d + 1, d + 2}, &tMax, 1};
   MeshHit h;
-  simd::meshClosestHits(meshView(bvh_, blocks_), v, &h.id, &h.t);
+  withRaysView(ray, tMax, [&](const simd::RaysView& v) {
+    simd::meshClosestHits(meshView(bvh_, blocks_), v, &h.id, &h.t);
+  });
   return h;
 }
 
 bool MeshBvh::occluded(const Ray& ray, float tMax) const {
   validateRay(ray, tMax, "MeshBvh::occluded");
   if (referencePathActive()) return reference::anyHit(bvh_, blocks_, traversal(ray, tMax));
-  const float o[3] = {ray.origin.x(), ray.origin.y(), ray.origin.z()};
-  const float d[3] = {ray.direction.x(), ray.direction.y(), ray.direction.z()};
-  const simd::RaysView v{{o, o + 1, o + 2}, {d, d + 1, d + 2}, &tMax, 1};
   std::uint8_t hit = 0;
-  simd::meshAnyHits(meshView(bvh_, blocks_), v, &hit);
+  withRaysView(ray, tMax, [&](const simd::RaysView& v) {
+    simd::meshAnyHits(meshView(bvh_, blocks_), v, &hit);
+  });
   return hit != 0;
 }
 
