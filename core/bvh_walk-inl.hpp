@@ -10,14 +10,16 @@
 // tests:
 //   Entry                      a reference, with what the node test learned (an entry distance,
 //                              per-lane distances); `Walker::ref(entry)` is the reference.
-//   skip(entry)                true if the entry is no longer worth visiting (the closest hit
-//                              found since it was pushed is nearer than its box).
-//   leaf(entry)                a leaf popped: tests its primitives; true stops the walk.
-//   expand(node, entry, stack, top)  tests the node's slots, pushes the children that pass at
-//                              stack[top...] (the first to visit last) and returns the new top; it
-//                              may handle leaves itself rather than push them. The stack has
-//                              kWidth entries of slack, so it may store a whole vector of
-//                              candidates and advance by the number kept.
+//   skip(entry)                true if a popped entry is no longer worth visiting (the closest
+//                              hit found since it was pushed is nearer than its box).
+//   leaf(entry)                a leaf reached: tests its primitives; true stops the walk.
+//   expand(node, entry, stack, top)  tests the node's slots and pushes the children that pass at
+//                              stack[top...] (the first to visit last), advancing `top`; it may
+//                              handle leaves itself rather than push them. It may instead hand the
+//                              child to visit first back in `entry` and return true: that child is
+//                              visited at once (the ray walk's nearest child, just tested against
+//                              the bound). The stack has kWidth entries of slack, so it may store
+//                              a whole vector of candidates and advance by the number kept.
 // `root` is where the walk starts: the root node, or a subtree handed over by another walk.
 template <class Walker>
 inline void walkBvh(const ::simdphys::BvhNode* nodes, std::size_t nodeCount, Walker& walker,
@@ -29,13 +31,15 @@ inline void walkBvh(const ::simdphys::BvhNode* nodes, std::size_t nodeCount, Wal
   int top = 0;
   stack[top++] = root;
   while (top > 0) {
-    const Entry e = stack[--top];  // a copy: the children may reuse the slot
+    Entry e = stack[--top];  // a copy: the children may reuse the slot
     if (walker.skip(e)) continue;
-    const std::uint32_t ref = Walker::ref(e);
-    if (BvhNode::isLeaf(ref)) {
-      if (walker.leaf(e)) return;
-    } else {
-      top = walker.expand(nodes[ref], e, stack, top);
+    for (;;) {
+      const std::uint32_t ref = Walker::ref(e);
+      if (BvhNode::isLeaf(ref)) {
+        if (walker.leaf(e)) return;
+        break;
+      }
+      if (!walker.expand(nodes[ref], e, stack, top)) break;
     }
   }
 }
@@ -66,19 +70,25 @@ class RayWalk {
   static std::uint32_t ref(const Entry& e) { return e.ref; }
   bool skip(const Entry& e) const { return e.t > core_.bound(); }
   bool leaf(const Entry& e) { return core_.leaf(e.ref); }
-  int expand(const ::simdphys::BvhNode& n, const Entry&, Entry* stack, int top) {
+  bool expand(const ::simdphys::BvhNode& n, Entry& e, Entry* stack, int& top) {
     using ::simdphys::BvhNode;
     alignas(64) std::uint32_t refs[2 * BvhNode::kWidth];
     alignas(64) float dists[2 * BvhNode::kWidth];
     const int count = core_.expand(n, core_.bound(), refs, dists);
-    // Insertion sort, farthest first, straight onto the stack: the nearest is popped next.
+    if (count == 0) return false;
+    if (count == 1) {
+      e = {refs[0], dists[0]};
+      return true;
+    }
+    // Insertion sort, farthest first, straight onto the stack; the nearest is visited now.
     const int base = top;
     for (int k = 0; k < count; ++k) {
       int j = top++;
       while (j > base && stack[j - 1].t < dists[k]) stack[j] = stack[j - 1], --j;
       stack[j] = {refs[k], dists[k]};
     }
-    return top;
+    e = stack[--top];
+    return true;
   }
 
  private:

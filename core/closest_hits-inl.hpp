@@ -29,7 +29,7 @@ class ClosestHits {
       count_ = kept;
     }
     if (count_ < kMaxTies) {
-      ties_[count_++] = {id, t};
+      ties_[count_++] = {t, id};
       return;
     }
     // Full: the worst entry (farthest, then largest id) gives way to a better one, so equal-t
@@ -37,26 +37,29 @@ class ClosestHits {
     int worst = 0;
     for (int k = 1; k < count_; ++k)
       if (worse(ties_[k], ties_[worst])) worst = k;
-    if (worse(ties_[worst], {id, t})) ties_[worst] = {id, t};
+    if (worse(ties_[worst], {t, id})) ties_[worst] = {t, id};
   }
 
   // The winner: id kNoHit and t = inf if nothing was hit.
   ::simdphys::MeshHit result() const {
     ::simdphys::MeshHit best;
     for (int k = 0; k < count_; ++k)
-      if (ties_[k].id < best.id) best = ties_[k];
+      if (ties_[k].id < best.id) best = {ties_[k].id, ties_[k].t};
     return best;
   }
 
  private:
-  // Candidates are ordered by t, then id.
-  static bool worse(const ::simdphys::MeshHit& a, const ::simdphys::MeshHit& b) {
-    return a.t > b.t || (a.t == b.t && a.id > b.id);
-  }
+  // A hit inside the window. Not a MeshHit: that one's default initialisation (a miss) would cost
+  // every ray 16 stores it never reads, and packets hold 16 of these.
+  struct Tie {
+    float t;
+    std::uint32_t id;
+  };
+  static bool worse(const Tie& a, const Tie& b) { return a.t > b.t || (a.t == b.t && a.id > b.id); }
   float tMax_, bound_;
   float tMin_ = std::numeric_limits<float>::infinity();
   int count_ = 0;
-  ::simdphys::MeshHit ties_[kMaxTies];  // the hits inside the window
+  Tie ties_[kMaxTies];
 };
 
 // The two sinks of a traversal: the closest hit, and any hit (which stops at the first).

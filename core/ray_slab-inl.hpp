@@ -4,27 +4,35 @@
 // guard, by design), after core/traversal_ray.hpp and, for floats, core/scalar_lanes-inl.hpp; the
 // operations are called unqualified (Highway's found by argument-dependent lookup).
 
-// The lanes whose ray enters their box before `bound` (and after 0), and `enter`, the scaled
-// distance where it does. Per axis: the box's near and far face (chosen by the sign bit of the
-// direction), the ray's origin and inverse direction. kFinite: every inverse is finite, so no
-// product is NaN and Max/Min bound the interval; otherwise comparisons, which leave the bound as
-// it is where a product is NaN (traversal_ray.hpp: the whole line lies in that slab).
+// One axis's slab clips the ray's interval [enter, exit]: enter rises to the near face's distance
+// tNear, exit falls to the far face's tFar. kFinite: no distance is NaN, so Max/Min do it;
+// otherwise comparisons, which leave the interval as it is where a distance is NaN (0 * inf, or
+// 0 / 0: the origin on a face the ray runs along, so the whole line lies in that slab). The walks
+// below clip [0, bound] with products by the inverse; an exact ray-box hit (raycast.hpp's slabs,
+// batch3d.cpp's rayClosestBox) is the same clip of (-inf, inf) with quotients by the direction.
+template <bool kFinite, class V>
+inline void clipSlab(V tNear, V tFar, V& enter, V& exit) {
+  if constexpr (kFinite) {
+    enter = Max(tNear, enter);
+    exit = Min(tFar, exit);
+  } else {
+    enter = IfThenElse(Gt(tNear, enter), tNear, enter);
+    exit = IfThenElse(Lt(tFar, exit), tFar, exit);
+  }
+}
+
+// The walks' test: the lanes whose ray enters their box before `bound` (and after 0), and
+// `enter`, the scaled distance where it does (traversal_ray.hpp: scaled so that a box the ray
+// touches in exact arithmetic is never culled). Per axis: the box's near and far face (chosen by
+// the sign bit of the direction), the ray's origin and inverse direction.
 template <bool kFinite, class D, class V>
 inline auto raySlab(D d, const V (&nearFace)[3], const V (&farFace)[3], const V (&origin)[3],
                     const V (&inverse)[3], V bound, V& enter) {
   enter = Zero(d);
   V exit = bound;
-  for (int a = 0; a < 3; ++a) {
-    const V tNear = Mul(Sub(nearFace[a], origin[a]), inverse[a]);
-    const V tFar = Mul(Sub(farFace[a], origin[a]), inverse[a]);
-    if constexpr (kFinite) {
-      enter = Max(tNear, enter);
-      exit = Min(tFar, exit);
-    } else {
-      enter = IfThenElse(Gt(tNear, enter), tNear, enter);
-      exit = IfThenElse(Lt(tFar, exit), tFar, exit);
-    }
-  }
+  for (int a = 0; a < 3; ++a)
+    clipSlab<kFinite>(Mul(Sub(nearFace[a], origin[a]), inverse[a]),
+                      Mul(Sub(farFace[a], origin[a]), inverse[a]), enter, exit);
   enter = Mul(enter, Set(d, ::simdphys::detail::kEnterScale));
   return Le(enter, Mul(exit, Set(d, ::simdphys::detail::kExitScale)));
 }

@@ -77,8 +77,10 @@ class RayPacket {
       p_.leaf(e.ref, e.dist);
       return false;
     }
-    int expand(const BvhNode& n, const Entry& e, Entry* stack, int top) {
-      return p_.template expand<kFinite>(n, e.dist, stack, top);
+    // Children are pushed, not visited at once: each popped entry takes the hybrid switch.
+    bool expand(const BvhNode& n, Entry& e, Entry* stack, int& top) {
+      top = p_.template expand<kFinite>(n, e.dist, stack, top);
+      return false;
     }
 
    private:

@@ -29,7 +29,7 @@ class OverlapWalk : public NodeWalk {
   OverlapWalk(const BvhNode* nodes, const Box& q, Sink& sink)
       : nodes_(nodes), sink_(sink), overlap_(d_, q) {}
 
-  int expand(const BvhNode& n, std::uint32_t, std::uint32_t* stack, int top) {
+  bool expand(const BvhNode& n, std::uint32_t&, std::uint32_t* stack, int& top) {
     for (std::size_t h = 0; h < BvhNode::kWidth; h += hn::Lanes(d_)) {
       auto hit =
           hn::RebindMask(du_, overlap_(d_, n.minX, n.minY, n.minZ, n.maxX, n.maxY, n.maxZ, h));
@@ -45,7 +45,7 @@ class OverlapWalk : public NodeWalk {
       for (int s = pushed; s < top; ++s) prefetchNode(nodes_ + stack[s]);
       sink_(du_, child, hn::And(leaf, hit));
     }
-    return top;
+    return false;
   }
 
  private:

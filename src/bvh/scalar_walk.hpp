@@ -27,7 +27,7 @@ class OverlapWalk : public NodeWalk {
  public:
   OverlapWalk(const Aabb& q, Visit& visit) : q_(q), visit_(visit) {}
 
-  int expand(const BvhNode& n, std::uint32_t, std::uint32_t* stack, int top) {
+  bool expand(const BvhNode& n, std::uint32_t&, std::uint32_t* stack, int& top) {
     for (int k = 0; k < BvhNode::kWidth; ++k) {
       // An empty slot passes no query, not even one with infinite bounds.
       const bool hit = n.child[k] != BvhNode::kEmpty && n.minX[k] <= q_.max.x() &&
@@ -41,7 +41,7 @@ class OverlapWalk : public NodeWalk {
       else
         stack[top++] = c;
     }
-    return top;
+    return false;
   }
 
  private:

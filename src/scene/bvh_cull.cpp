@@ -14,7 +14,7 @@ namespace {
 class TakeAll : public reference::NodeWalk {
  public:
   explicit TakeAll(std::vector<std::uint64_t>& seen) : seen_(seen) {}
-  int expand(const BvhNode& node, std::uint32_t, std::uint32_t* stack, int top) {
+  bool expand(const BvhNode& node, std::uint32_t&, std::uint32_t* stack, int& top) {
     for (std::uint32_t c : node.child) {
       if (c == BvhNode::kEmpty) continue;
       if (BvhNode::isLeaf(c))
@@ -22,7 +22,7 @@ class TakeAll : public reference::NodeWalk {
       else
         stack[top++] = c;
     }
-    return top;
+    return false;
   }
 
  private:
@@ -35,7 +35,7 @@ class FrustumWalk : public reference::NodeWalk {
   FrustumWalk(const Frustum& f, std::span<const BvhNode> nodes, const BoundsStream& boxes,
               std::vector<std::uint64_t>& seen)
       : f_(f), nodes_(nodes), boxes_(boxes), seen_(seen) {}
-  int expand(const BvhNode& node, std::uint32_t, std::uint32_t* stack, int top) {
+  bool expand(const BvhNode& node, std::uint32_t&, std::uint32_t* stack, int& top) {
     for (int k = 0; k < BvhNode::kWidth; ++k) {
       const std::uint32_t c = node.child[k];
       if (c == BvhNode::kEmpty) continue;
@@ -57,7 +57,7 @@ class FrustumWalk : public reference::NodeWalk {
         reference::walkBvh(nodes_.data(), nodes_.size(), all, c);
       }
     }
-    return top;
+    return false;
   }
 
  private:
