@@ -3,9 +3,8 @@
 // which may stay in the last-level cache), "planes_dram" cycles through copies of it, at least
 // 128 MiB in all (4x the 32 MiB L3 of the reference machine), so each iteration reads from DRAM.
 #include "bench_common.hpp"
-#include "simd/kernels.hpp"
-#include "src/reference/cull.hpp"
-#include "src/views.hpp"
+#include "testing/cull_reference.hpp"
+#include "testing/kernels.hpp"
 
 namespace simdphys::bench {
 namespace {

@@ -6,10 +6,9 @@
 #include <memory>
 
 #include "bench_common.hpp"
-#include "simd/kernels.hpp"
 #include "simdphys/geometry2d/batch.hpp"
 #include "simdphys/geometry2d/broadphase.hpp"
-#include "src/geometry2d/views.hpp"
+#include "testing/kernels.hpp"
 
 namespace simdphys::bench {
 namespace {
@@ -124,8 +123,7 @@ KernelCase kernelCase(std::string task, std::vector<Query> queries, const Stream
   k.autovec = [queries, &stream, out, kernel] {
     std::uint64_t hits = 0;
     out->resize(stream.padded());
-    for (const Query& q : queries)
-      hits += kernel(query2d(q), view(stream), out->data(), simd::Loop::kAutovec);
+    for (const Query& q : queries) hits += kernel(query2d(q), view(stream), out->data());
     return hits;
   };
   return k;
@@ -140,13 +138,13 @@ std::vector<KernelCase> kernelCases() {
   for (const OrientedRect& b : w.queryOrientedRects)
     rects.push_back(boundingRect(b)), points.push_back(b.center);
   return {
-      kernelCase("circle_circles", w.queryCircles, w.circles, simd::circleOverlapsCircles),
-      kernelCase("rect_rects", rects, w.bounds, simd::rectOverlapsRects),
+      kernelCase("circle_circles", w.queryCircles, w.circles, simd::circleOverlapsCirclesAutovec),
+      kernelCase("rect_rects", rects, w.bounds, simd::rectOverlapsRectsAutovec),
       kernelCase("orect_orects", w.queryOrientedRects, w.orientedRects,
-                 simd::orientedRectOverlapsOrientedRects),
-      kernelCase("point_circles", points, w.circles, simd::pointInCircles),
-      kernelCase("point_rects", points, w.bounds, simd::pointInRects),
-      kernelCase("point_orects", points, w.orientedRects, simd::pointInOrientedRects),
+                 simd::orientedRectOverlapsOrientedRectsAutovec),
+      kernelCase("point_circles", points, w.circles, simd::pointInCirclesAutovec),
+      kernelCase("point_rects", points, w.bounds, simd::pointInRectsAutovec),
+      kernelCase("point_orects", points, w.orientedRects, simd::pointInOrientedRectsAutovec),
   };
 }
 

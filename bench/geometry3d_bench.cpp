@@ -4,11 +4,10 @@
 #include <cmath>
 
 #include "bench_common.hpp"
-#include "simd/kernels.hpp"
 #include "simdphys/geometry3d/batch.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
-#include "src/views.hpp"
+#include "testing/kernels.hpp"
 
 namespace simdphys::bench {
 namespace {

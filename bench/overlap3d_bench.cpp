@@ -7,11 +7,10 @@
 #include <cmath>
 
 #include "bench_common.hpp"
-#include "simd/kernels.hpp"
 #include "simdphys/geometry3d/batch.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
-#include "src/views.hpp"
+#include "testing/kernels.hpp"
 
 namespace simdphys::bench {
 namespace {

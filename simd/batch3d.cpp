@@ -1,6 +1,6 @@
-// Batch forms of the 3D shape tests: one shape against a stream, a vector of elements at a time.
-// Each mirrors the arithmetic of its scalar function in geometry3d/ (same order, no fusion), so
-// the paths agree exactly.
+// Batch forms of the 3D shape tests: one shape against a stream, a vector of elements at a time,
+// and beside them their plain-loop baselines. Each mirrors the arithmetic of its scalar function
+// in geometry3d/ (same order, no fusion), so the paths agree exactly.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "simd/batch3d.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -10,8 +10,14 @@
 #include <cmath>
 #include <limits>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
-#include "simdphys/geometry3d/raycast.hpp"  // differenceOfProducts: the exact edge fallback
+#include "simdphys/detail/float_math.hpp"  // differenceOfProducts: the exact edge fallback
+
+// watertight-inl.hpp names the helper by its old place in raycast.hpp.
+namespace simdphys::simd::detail::rays {
+using simdphys::detail::differenceOfProducts;
+}
 
 HWY_BEFORE_NAMESPACE();
 namespace simdphys::simd {
@@ -40,10 +46,10 @@ auto withinReach(D d, V distance, V reach, float tolerance) {
 
 std::size_t SphereOverlapsSpheres(const SphereQuery& s, const SpheresView& v, std::uint32_t* out) {
   return selectIndices(v.padded, out, [&](auto d, std::size_t i) {
-    const auto dx = hn::Sub(hn::Load(d, v.x + i), hn::Set(d, s.x));
-    const auto dy = hn::Sub(hn::Load(d, v.y + i), hn::Set(d, s.y));
-    const auto dz = hn::Sub(hn::Load(d, v.z + i), hn::Set(d, s.z));
-    const auto reach = hn::Add(hn::Set(d, s.r), hn::Load(d, v.r + i));
+    const auto dx = hn::Sub(hn::Load(d, v[fields::Sphere::x] + i), hn::Set(d, s.x));
+    const auto dy = hn::Sub(hn::Load(d, v[fields::Sphere::y] + i), hn::Set(d, s.y));
+    const auto dz = hn::Sub(hn::Load(d, v[fields::Sphere::z] + i), hn::Set(d, s.z));
+    const auto reach = hn::Add(hn::Set(d, s.r), hn::Load(d, v[fields::Sphere::r] + i));
     // Padding has radius -inf, so a reach of -inf, which no distance is within.
     return withinReach(d, hn::Sqrt(squaredLength(dx, dy, dz)), reach, s.tolerance);
   });
@@ -57,12 +63,16 @@ auto clampTo(D d, float p, const float* lo, const float* hi, std::size_t i) {
 
 std::size_t SphereOverlapsBoxes(const SphereQuery& s, const BoxesView& v, std::uint32_t* out) {
   return selectIndices(v.padded, out, [&](auto d, std::size_t i) {
-    const auto dx = hn::Sub(hn::Set(d, s.x), clampTo(d, s.x, v.minX, v.maxX, i));
-    const auto dy = hn::Sub(hn::Set(d, s.y), clampTo(d, s.y, v.minY, v.maxY, i));
-    const auto dz = hn::Sub(hn::Set(d, s.z), clampTo(d, s.z, v.minZ, v.maxZ, i));
+    const auto dx =
+        hn::Sub(hn::Set(d, s.x), clampTo(d, s.x, v[fields::Box::minX], v[fields::Box::maxX], i));
+    const auto dy =
+        hn::Sub(hn::Set(d, s.y), clampTo(d, s.y, v[fields::Box::minY], v[fields::Box::maxY], i));
+    const auto dz =
+        hn::Sub(hn::Set(d, s.z), clampTo(d, s.z, v[fields::Box::minZ], v[fields::Box::maxZ], i));
     // Padding boxes are empty (min > max), which no valid box is; their infinite distance alone
     // would pass the tolerance test (inf <= inf).
-    const auto real = hn::Le(hn::Load(d, v.minX + i), hn::Load(d, v.maxX + i));
+    const auto real =
+        hn::Le(hn::Load(d, v[fields::Box::minX] + i), hn::Load(d, v[fields::Box::maxX] + i));
     return hn::And(
         real, withinReach(d, hn::Sqrt(squaredLength(dx, dy, dz)), hn::Set(d, s.r), s.tolerance));
   });
@@ -74,7 +84,9 @@ std::size_t PointInBoxes(float x, float y, float z, const BoxesView& v, std::uin
       const auto q = hn::Set(d, p);
       return hn::And(hn::Le(hn::Load(d, lo + i), q), hn::Le(q, hn::Load(d, hi + i)));
     };
-    return hn::And(in(x, v.minX, v.maxX), hn::And(in(y, v.minY, v.maxY), in(z, v.minZ, v.maxZ)));
+    return hn::And(in(x, v[fields::Box::minX], v[fields::Box::maxX]),
+                   hn::And(in(y, v[fields::Box::minY], v[fields::Box::maxY]),
+                           in(z, v[fields::Box::minZ], v[fields::Box::maxZ])));
   });
 }
 
@@ -82,9 +94,9 @@ void ClosestPointsOnBoxes(float x, float y, float z, const BoxesView& v, float* 
                           float* cz) {
   const hn::ScalableTag<float> d;
   for (std::size_t i = 0; i < v.padded; i += hn::Lanes(d)) {
-    hn::Store(clampTo(d, x, v.minX, v.maxX, i), d, cx + i);
-    hn::Store(clampTo(d, y, v.minY, v.maxY, i), d, cy + i);
-    hn::Store(clampTo(d, z, v.minZ, v.maxZ, i), d, cz + i);
+    hn::Store(clampTo(d, x, v[fields::Box::minX], v[fields::Box::maxX], i), d, cx + i);
+    hn::Store(clampTo(d, y, v[fields::Box::minY], v[fields::Box::maxY], i), d, cy + i);
+    hn::Store(clampTo(d, z, v[fields::Box::minZ], v[fields::Box::maxZ], i), d, cz + i);
   }
 }
 
@@ -127,8 +139,8 @@ class ClosestHit {
 StreamHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
   const hn::ScalableTag<float> d;
   const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
-  const float* lo[3] = {v.minX, v.minY, v.minZ};
-  const float* hi[3] = {v.maxX, v.maxY, v.maxZ};
+  const float* lo[3] = {v[fields::Box::minX], v[fields::Box::minY], v[fields::Box::minZ]};
+  const float* hi[3] = {v[fields::Box::maxX], v[fields::Box::maxY], v[fields::Box::maxZ]};
   const float *nearFace[3], *farFace[3];
   for (int a = 0; a < 3; ++a) {
     const bool negative = std::signbit(dir[a]);
@@ -163,10 +175,10 @@ StreamHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
   const auto dd = squaredLength(dx, dy, dz);
   ClosestHit closest(d);
   for (std::size_t i = 0; i < v.padded; i += hn::Lanes(d)) {
-    const auto ex = hn::Sub(hn::Load(d, v.x + i), hn::Set(d, r.ox));
-    const auto ey = hn::Sub(hn::Load(d, v.y + i), hn::Set(d, r.oy));
-    const auto ez = hn::Sub(hn::Load(d, v.z + i), hn::Set(d, r.oz));
-    const auto radius = hn::Load(d, v.r + i);
+    const auto ex = hn::Sub(hn::Load(d, v[fields::Sphere::x] + i), hn::Set(d, r.ox));
+    const auto ey = hn::Sub(hn::Load(d, v[fields::Sphere::y] + i), hn::Set(d, r.oy));
+    const auto ez = hn::Sub(hn::Load(d, v[fields::Sphere::z] + i), hn::Set(d, r.oz));
+    const auto radius = hn::Load(d, v[fields::Sphere::r] + i);
     const auto r2 = hn::Mul(radius, radius);
     const auto c0 = hn::Sub(squaredLength(ex, ey, ez), r2);
     const auto b = hn::Div(dot3(ex, ey, ez, dx, dy, dz), dd);
@@ -201,10 +213,154 @@ StreamHit RayClosestTriangle(const WatertightQuery& r, const TrianglesView& v) {
   for (std::size_t i = 0; i < v.padded; i += hn::Lanes(d)) {
     hn::Vec<decltype(d)> t;
     const auto hit = watertightHits(
-        d, r, r.tMax, [&](int q, int k) { return hn::Load(d, v.v[q][k] + i); }, t);
+        d, r, r.tMax,
+        [&](int q, int k) { return hn::Load(d, v[fields::Triangle::vertex + 3 * q + k] + i); }, t);
     closest.offer(d, i, hit, t);
   }
   return closest.result(d);
+}
+
+// ---- baselines -----------------------------------------------------------------------------
+// The same forms as plain loops over the elements, left to the compiler's auto-vectoriser and
+// compiled for each target like the kernels: same arithmetic, same answers; only the SIMD
+// formulation differs.
+
+float length3(float x, float y, float z) { return std::sqrt(x * x + (y * y + z * z)); }
+
+// Indices of the elements that pass `test`, written without a branch on the result.
+template <class Test>
+std::size_t select(std::size_t count, std::uint32_t* out, Test test) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    out[n] = std::uint32_t(i);
+    n += test(i);
+  }
+  return n;
+}
+
+std::size_t SphereOverlapsSpheresAutovec(const SphereQuery& s, const SpheresView& v,
+                                         std::uint32_t* out) {
+  return select(v.count, out, [&](std::size_t i) {
+    const float distance = length3(v[fields::Sphere::x][i] - s.x, v[fields::Sphere::y][i] - s.y,
+                                   v[fields::Sphere::z][i] - s.z);
+    const float reach = s.r + v[fields::Sphere::r][i];
+    return distance <= reach + s.tolerance * (distance + reach);
+  });
+}
+
+std::size_t SphereOverlapsBoxesAutovec(const SphereQuery& s, const BoxesView& v,
+                                       std::uint32_t* out) {
+  return select(v.count, out, [&](std::size_t i) {
+    const float dx =
+        s.x - std::min(std::max(s.x, v[fields::Box::minX][i]), v[fields::Box::maxX][i]);
+    const float dy =
+        s.y - std::min(std::max(s.y, v[fields::Box::minY][i]), v[fields::Box::maxY][i]);
+    const float dz =
+        s.z - std::min(std::max(s.z, v[fields::Box::minZ][i]), v[fields::Box::maxZ][i]);
+    const float distance = length3(dx, dy, dz);
+    return distance <= s.r + s.tolerance * (distance + s.r);
+  });
+}
+
+std::size_t PointInBoxesAutovec(float x, float y, float z, const BoxesView& v, std::uint32_t* out) {
+  return select(v.count, out, [&](std::size_t i) {
+    return (v[fields::Box::minX][i] <= x) & (x <= v[fields::Box::maxX][i]) &
+           (v[fields::Box::minY][i] <= y) & (y <= v[fields::Box::maxY][i]) &
+           (v[fields::Box::minZ][i] <= z) & (z <= v[fields::Box::maxZ][i]);
+  });
+}
+
+void ClosestPointsOnBoxesAutovec(float x, float y, float z, const BoxesView& v, float* cx,
+                                 float* cy, float* cz) {
+  for (std::size_t i = 0; i < v.count; ++i) {
+    cx[i] = std::min(std::max(x, v[fields::Box::minX][i]), v[fields::Box::maxX][i]);
+    cy[i] = std::min(std::max(y, v[fields::Box::minY][i]), v[fields::Box::maxY][i]);
+    cz[i] = std::min(std::max(z, v[fields::Box::minZ][i]), v[fields::Box::maxZ][i]);
+  }
+}
+
+StreamHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
+  const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
+  const float* lo[3] = {v[fields::Box::minX], v[fields::Box::minY], v[fields::Box::minZ]};
+  const float* hi[3] = {v[fields::Box::maxX], v[fields::Box::maxY], v[fields::Box::maxZ]};
+  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  for (std::size_t i = 0; i < v.count; ++i) {
+    float enter = -std::numeric_limits<float>::infinity();
+    float exit = std::numeric_limits<float>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      const bool negative = std::signbit(dir[a]);
+      const float tNear = ((negative ? hi[a][i] : lo[a][i]) - o[a]) / dir[a];
+      const float tFar = ((negative ? lo[a][i] : hi[a][i]) - o[a]) / dir[a];
+      enter = tNear > enter ? tNear : enter;
+      exit = tFar < exit ? tFar : exit;
+    }
+    const float t = (enter >= 0 ? enter : exit) + 0.0f;
+    if (enter <= exit && t >= 0 && t <= r.tMax && t < best.t) best = {std::uint32_t(i), t};
+  }
+  return best;
+}
+
+StreamHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
+  const float dd = r.dx * r.dx + (r.dy * r.dy + r.dz * r.dz);
+  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  for (std::size_t i = 0; i < v.count; ++i) {
+    const float ex = v[fields::Sphere::x][i] - r.ox, ey = v[fields::Sphere::y][i] - r.oy,
+                ez = v[fields::Sphere::z][i] - r.oz;
+    const float r2 = v[fields::Sphere::r][i] * v[fields::Sphere::r][i];
+    const float c0 = (ex * ex + (ey * ey + ez * ez)) - r2;
+    const float b = (ex * r.dx + (ey * r.dy + ez * r.dz)) / dd;
+    float mx = ex - b * r.dx, my = ey - b * r.dy, mz = ez - b * r.dz;
+    const float k = (mx * r.dx + (my * r.dy + mz * r.dz)) / dd;
+    mx -= k * r.dx, my -= k * r.dy, mz -= k * r.dz;
+    const float h2 = r2 - (mx * mx + (my * my + mz * mz));
+    float t = 0;
+    bool hit = c0 <= 0;
+    if (c0 > 0) {
+      const float f = std::sqrt(h2 / dd);
+      t = (c0 / dd) / (b + f);
+      hit = b > 0 && h2 >= 0;
+    } else if (c0 < 0) {
+      const float f = std::sqrt(std::max(h2, 0.0f) / dd);
+      t = b >= 0 ? b + f : (c0 / dd) / (b - f);
+    }
+    if (hit && t <= r.tMax && t < best.t) best = {std::uint32_t(i), t};
+  }
+  return best;
+}
+
+// raycast.hpp's intersectTriangle per element: plain products, recomputed exactly only where one
+// rounds to zero.
+StreamHit RayClosestTriangleAutovec(const WatertightQuery& r, const TrianglesView& v) {
+  const float origin[3] = {r.ox, r.oy, r.oz};
+  const int k[3] = {r.kx, r.ky, r.kz};
+  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  for (std::size_t i = 0; i < v.count; ++i) {
+    float px[3], py[3], pz[3];
+    for (int q = 0; q < 3; ++q) {
+      pz[q] = v[fields::Triangle::vertex + 3 * q + k[2]][i] - origin[k[2]];
+      px[q] = (v[fields::Triangle::vertex + 3 * q + k[0]][i] - origin[k[0]]) - r.sx * pz[q];
+      py[q] = (v[fields::Triangle::vertex + 3 * q + k[1]][i] - origin[k[1]]) - r.sy * pz[q];
+    }
+    float u = px[2] * py[1] - py[2] * px[1];
+    float w1 = px[0] * py[2] - py[0] * px[2];
+    float w2 = px[1] * py[0] - py[1] * px[0];
+    if (u == 0 || w1 == 0 || w2 == 0) {
+      u = simdphys::detail::differenceOfProducts(px[2], py[1], py[2], px[1]);
+      w1 = simdphys::detail::differenceOfProducts(px[0], py[2], py[0], px[2]);
+      w2 = simdphys::detail::differenceOfProducts(px[1], py[0], py[1], px[0]);
+    }
+    const bool anyNegative = u < 0 || w1 < 0 || w2 < 0;
+    const bool anyPositive = u > 0 || w1 > 0 || w2 > 0;
+    const float det = (u + w1) + w2;
+    const float scaled = (u * (r.sz * pz[0]) + w1 * (r.sz * pz[1])) + w2 * (r.sz * pz[2]);
+    const float t = (std::isfinite(scaled) ? scaled / det
+                                           : u / det * (r.sz * pz[0]) + w1 / det * (r.sz * pz[1]) +
+                                                 w2 / det * (r.sz * pz[2])) +
+                    0.0f;
+    if (!(anyNegative && anyPositive) && det != 0 && t >= 0 && t <= r.tMax && t < best.t)
+      best = {std::uint32_t(i), t};
+  }
+  return best;
 }
 
 }  // namespace HWY_NAMESPACE
@@ -213,37 +369,19 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(SphereOverlapsSpheres);
-HWY_EXPORT(SphereOverlapsBoxes);
-HWY_EXPORT(PointInBoxes);
-HWY_EXPORT(ClosestPointsOnBoxes);
-HWY_EXPORT(RayClosestBox);
-HWY_EXPORT(RayClosestSphere);
-HWY_EXPORT(RayClosestTriangle);
-
-StreamHit rayClosestTriangle(const WatertightQuery& ray, const TrianglesView& v) {
-  return HWY_DYNAMIC_DISPATCH(RayClosestTriangle)(ray, v);
-}
-
-StreamHit rayClosestBox(const RayQuery& ray, const BoxesView& v) {
-  return HWY_DYNAMIC_DISPATCH(RayClosestBox)(ray, v);
-}
-StreamHit rayClosestSphere(const RayQuery& ray, const SpheresView& v) {
-  return HWY_DYNAMIC_DISPATCH(RayClosestSphere)(ray, v);
-}
-
-std::size_t sphereOverlapsSpheres(const SphereQuery& s, const SpheresView& v, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(SphereOverlapsSpheres)(s, v, out);
-}
-std::size_t sphereOverlapsBoxes(const SphereQuery& s, const BoxesView& v, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(SphereOverlapsBoxes)(s, v, out);
-}
-std::size_t pointInBoxes(float x, float y, float z, const BoxesView& v, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(PointInBoxes)(x, y, z, v, out);
-}
-void closestPointsOnBoxes(float x, float y, float z, const BoxesView& v, float* cx, float* cy,
-                          float* cz) {
-  HWY_DYNAMIC_DISPATCH(ClosestPointsOnBoxes)(x, y, z, v, cx, cy, cz);
-}
+SIMDPHYS_EXPORT(SphereOverlapsSpheres, sphereOverlapsSpheres);
+SIMDPHYS_EXPORT(SphereOverlapsBoxes, sphereOverlapsBoxes);
+SIMDPHYS_EXPORT(PointInBoxes, pointInBoxes);
+SIMDPHYS_EXPORT(ClosestPointsOnBoxes, closestPointsOnBoxes);
+SIMDPHYS_EXPORT(RayClosestBox, rayClosestBox);
+SIMDPHYS_EXPORT(RayClosestSphere, rayClosestSphere);
+SIMDPHYS_EXPORT(RayClosestTriangle, rayClosestTriangle);
+SIMDPHYS_EXPORT(SphereOverlapsSpheresAutovec, sphereOverlapsSpheresAutovec);
+SIMDPHYS_EXPORT(SphereOverlapsBoxesAutovec, sphereOverlapsBoxesAutovec);
+SIMDPHYS_EXPORT(PointInBoxesAutovec, pointInBoxesAutovec);
+SIMDPHYS_EXPORT(ClosestPointsOnBoxesAutovec, closestPointsOnBoxesAutovec);
+SIMDPHYS_EXPORT(RayClosestBoxAutovec, rayClosestBoxAutovec);
+SIMDPHYS_EXPORT(RayClosestSphereAutovec, rayClosestSphereAutovec);
+SIMDPHYS_EXPORT(RayClosestTriangleAutovec, rayClosestTriangleAutovec);
 }  // namespace simdphys::simd
 #endif

@@ -56,8 +56,10 @@ void BruteRects2d(const RectsView& v, std::vector<Pair>& out, Loop loop) {
   if (loop == Loop::kAutovec) {
     for (std::size_t i = 0; i < v.count; ++i)
       for (std::size_t j = i + 1; j < v.count; ++j)
-        if (v.minX[j] <= v.maxX[i] && v.minX[i] <= v.maxX[j] && v.minY[j] <= v.maxY[i] &&
-            v.minY[i] <= v.maxY[j])
+        if (v[fields::Rect::minX][j] <= v[fields::Rect::maxX][i] &&
+            v[fields::Rect::minX][i] <= v[fields::Rect::maxX][j] &&
+            v[fields::Rect::minY][j] <= v[fields::Rect::maxY][i] &&
+            v[fields::Rect::minY][i] <= v[fields::Rect::maxY][j])
           out.push_back({std::uint32_t(i), std::uint32_t(j)});
     return;
   }
@@ -65,12 +67,15 @@ void BruteRects2d(const RectsView& v, std::vector<Pair>& out, Loop loop) {
   const hn::RebindToUnsigned<decltype(d)> du;
   const std::size_t lanes = hn::Lanes(d);
   for (std::size_t i = 0; i < v.count; ++i) {
-    const auto minX = hn::Set(d, v.minX[i]), minY = hn::Set(d, v.minY[i]);
-    const auto maxX = hn::Set(d, v.maxX[i]), maxY = hn::Set(d, v.maxY[i]);
+    const auto minX = hn::Set(d, v[fields::Rect::minX][i]),
+               minY = hn::Set(d, v[fields::Rect::minY][i]);
+    const auto maxX = hn::Set(d, v[fields::Rect::maxX][i]),
+               maxY = hn::Set(d, v[fields::Rect::maxY][i]);
     auto overlap = [&](std::size_t j) {
-      return hn::And(
-          hn::And(hn::Le(hn::Load(d, v.minX + j), maxX), hn::Le(minX, hn::Load(d, v.maxX + j))),
-          hn::And(hn::Le(hn::Load(d, v.minY + j), maxY), hn::Le(minY, hn::Load(d, v.maxY + j))));
+      return hn::And(hn::And(hn::Le(hn::Load(d, v[fields::Rect::minX] + j), maxX),
+                             hn::Le(minX, hn::Load(d, v[fields::Rect::maxX] + j))),
+                     hn::And(hn::Le(hn::Load(d, v[fields::Rect::minY] + j), maxY),
+                             hn::Le(minY, hn::Load(d, v[fields::Rect::maxY] + j))));
     };
     auto emit = [&](std::size_t j) {
       return [&out, i, j](std::size_t k) {

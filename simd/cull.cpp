@@ -6,6 +6,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -25,8 +26,9 @@ V planeDistance(D d, const Planes& p, int k, V x, V y, V z) {
 
 std::size_t CullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* out) {
   return selectIndices(s.padded, out, [&](auto d, std::size_t i) {
-    const auto x = hn::Load(d, s.x + i), y = hn::Load(d, s.y + i), z = hn::Load(d, s.z + i);
-    const auto negR = hn::Neg(hn::Load(d, s.r + i));
+    const auto x = hn::Load(d, s[fields::Sphere::x] + i), y = hn::Load(d, s[fields::Sphere::y] + i),
+               z = hn::Load(d, s[fields::Sphere::z] + i);
+    const auto negR = hn::Neg(hn::Load(d, s[fields::Sphere::r] + i));
     auto keep = hn::Ge(planeDistance(d, p, 0, x, y, z), negR);
     for (int k = 1; k < 6; ++k) keep = hn::And(keep, hn::Ge(planeDistance(d, p, k, x, y, z), negR));
     return keep;
@@ -35,8 +37,12 @@ std::size_t CullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* ou
 
 std::size_t CullBounds(const Planes& p, const BoundsView& b, std::uint32_t* out) {
   return selectIndices(b.padded, out, [&](auto d, std::size_t i) {
-    const auto x = hn::Load(d, b.cx + i), y = hn::Load(d, b.cy + i), z = hn::Load(d, b.cz + i);
-    const auto ex = hn::Load(d, b.ex + i), ey = hn::Load(d, b.ey + i), ez = hn::Load(d, b.ez + i);
+    const auto x = hn::Load(d, b[fields::Bounds::cx] + i),
+               y = hn::Load(d, b[fields::Bounds::cy] + i),
+               z = hn::Load(d, b[fields::Bounds::cz] + i);
+    const auto ex = hn::Load(d, b[fields::Bounds::ex] + i),
+               ey = hn::Load(d, b[fields::Bounds::ey] + i),
+               ez = hn::Load(d, b[fields::Bounds::ez] + i);
     auto visible = [&](int k) {
       auto reach = hn::Add(hn::Add(hn::Mul(hn::Set(d, std::abs(p.nx[k])), ex),
                                    hn::Mul(hn::Set(d, std::abs(p.ny[k])), ey)),
@@ -55,7 +61,9 @@ std::size_t CullSpheresAutovec(const Planes& p, const SpheresView& s, std::uint3
   for (std::size_t i = 0; i < s.padded; ++i) {
     bool visible = true;
     for (int k = 0; k < 6; ++k)
-      visible &= p.nx[k] * s.x[i] + p.ny[k] * s.y[i] + p.nz[k] * s.z[i] + p.d[k] >= -s.r[i];
+      visible &= p.nx[k] * s[fields::Sphere::x][i] + p.ny[k] * s[fields::Sphere::y][i] +
+                     p.nz[k] * s[fields::Sphere::z][i] + p.d[k] >=
+                 -s[fields::Sphere::r][i];
     out[count] = static_cast<std::uint32_t>(i);
     count += visible;
   }
@@ -67,9 +75,11 @@ std::size_t CullBoundsAutovec(const Planes& p, const BoundsView& b, std::uint32_
   for (std::size_t i = 0; i < b.padded; ++i) {
     bool visible = true;
     for (int k = 0; k < 6; ++k) {
-      float dist = p.nx[k] * b.cx[i] + p.ny[k] * b.cy[i] + p.nz[k] * b.cz[i] + p.d[k];
-      float reach =
-          std::abs(p.nx[k]) * b.ex[i] + std::abs(p.ny[k]) * b.ey[i] + std::abs(p.nz[k]) * b.ez[i];
+      float dist = p.nx[k] * b[fields::Bounds::cx][i] + p.ny[k] * b[fields::Bounds::cy][i] +
+                   p.nz[k] * b[fields::Bounds::cz][i] + p.d[k];
+      float reach = std::abs(p.nx[k]) * b[fields::Bounds::ex][i] +
+                    std::abs(p.ny[k]) * b[fields::Bounds::ey][i] +
+                    std::abs(p.nz[k]) * b[fields::Bounds::ez][i];
       visible &= dist + reach >= 0.0f;
     }
     out[count] = static_cast<std::uint32_t>(i);
@@ -84,22 +94,9 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(CullSpheres);
-HWY_EXPORT(CullBounds);
-HWY_EXPORT(CullSpheresAutovec);
-HWY_EXPORT(CullBoundsAutovec);
-
-std::size_t cullSpheres(const Planes& p, const SpheresView& s, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(CullSpheres)(p, s, out);
-}
-std::size_t cullBounds(const Planes& p, const BoundsView& b, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(CullBounds)(p, b, out);
-}
-std::size_t cullSpheresAutovec(const Planes& p, const SpheresView& s, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(CullSpheresAutovec)(p, s, out);
-}
-std::size_t cullBoundsAutovec(const Planes& p, const BoundsView& b, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(CullBoundsAutovec)(p, b, out);
-}
+SIMDPHYS_EXPORT(CullSpheres, cullSpheres);
+SIMDPHYS_EXPORT(CullBounds, cullBounds);
+SIMDPHYS_EXPORT(CullSpheresAutovec, cullSpheresAutovec);
+SIMDPHYS_EXPORT(CullBoundsAutovec, cullBoundsAutovec);
 }  // namespace simdphys::simd
 #endif

@@ -1,7 +1,13 @@
 // The interface between the library and its SIMD kernels. Plain pointers and counts only: no
 // Highway and no Eigen types cross it, so each kernel file is compiled once per instruction set
-// and chosen at run time (see dispatch.cpp). Every array is a padded stream (core.hpp): kernels
+// and chosen at run time (see dispatch.cpp). Streams cross as core::View (core/view.hpp): kernels
 // read whole vectors up to `padded` and rely on the padding value to produce no result.
+//
+// A batch kernel is declared here once, as a Kernel object with its signature; its file defines
+// it per target and exports it with one SIMDPHYS_EXPORT line (simd/export.hpp). Its plain-loop
+// baseline, the same computation left to the compiler's auto-vectoriser (the benchmarks' honest
+// second baseline), is the kernel of the same name with "Autovec" appended, same signature, same
+// file (docs/architecture.md, "How to add a kernel").
 #pragma once
 
 #include <array>
@@ -11,7 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "core/view.hpp"
 #include "simdphys/core.hpp"
+#include "simdphys/stream_fields.hpp"
 
 namespace simdphys {
 struct BvhNode;  // bvh.hpp: plain arrays, no Eigen
@@ -41,6 +49,25 @@ std::vector<std::string> supportedTargets();
 // Makes the named target the one HWY_DYNAMIC_DISPATCH calls. Returns false if unsupported.
 bool selectTarget(const std::string& name);
 
+// A kernel compiled once per target, called as a function: each call runs the chosen target's
+// code (Highway's dispatch table, read through `chosen`). Defined by SIMDPHYS_EXPORT.
+template <class Signature>
+class Kernel;
+template <class R, class... A>
+class Kernel<R(A...)> {
+ public:
+  using Function = R (*)(A...);
+  constexpr explicit Kernel(Function (*chosen)()) : chosen_(chosen) {}
+  R operator()(A... a) const { return chosen_()(a...); }
+
+ private:
+  Function (*chosen_)();
+};
+// The common kind: the elements of a stream view that a query selects, their indices ascending in
+// `out` (room for the view's `padded` count: kernels store whole vectors), their number returned.
+template <class Query, class View>
+using SelectKernel = Kernel<std::size_t(const Query& query, const View& view, std::uint32_t* out)>;
+
 // For compress-inl.hpp: entry m lists, a nibble per lane from the lowest, the indices of the
 // set bits of m (the lanes a mask of 8 lanes keeps).
 inline constexpr auto kCompressNibbles = [] {
@@ -51,24 +78,19 @@ inline constexpr auto kCompressNibbles = [] {
   return table;
 }();
 
-// ---- views -----------------------------------------------------------------------------------
-// Boxes as min/max SoA. Padding boxes are empty (min = +inf, max = -inf).
-struct BoxesView {
-  const float *minX, *minY, *minZ, *maxX, *maxY, *maxZ;
-  std::size_t count, padded;
-};
+// ---- views: the streams as kernels read them (the layouts of simdphys/stream_fields.hpp) -------
+using BoxesView = core::View<fields::Box>;
+using SpheresView = core::View<fields::Sphere>;
+using BoundsView = core::View<fields::Bounds>;
+using TrianglesView = core::View<fields::Triangle>;
+using ObbsView = core::View<fields::Obb>;
+using CirclesView = core::View<fields::Circle>;
+using RectsView = core::View<fields::Rect>;
+using OrientedRectsView = core::View<fields::OrientedRect>;
+
+// One box as a query.
 struct Box {
   float minX, minY, minZ, maxX, maxY, maxZ;
-};
-// Spheres as centre/radius SoA. Padding has radius -inf.
-struct SpheresView {
-  const float *x, *y, *z, *r;
-  std::size_t count, padded;
-};
-// Boxes as centre/half-extent SoA (what culling wants). Padding has extent -inf.
-struct BoundsView {
-  const float *cx, *cy, *cz, *ex, *ey, *ez;
-  std::size_t count, padded;
 };
 // Six planes n.p + d >= 0 inside, SoA.
 struct Planes {
@@ -77,10 +99,8 @@ struct Planes {
 
 // ---- W1: box overlap --------------------------------------------------------------------------
 // Brute force: for each query, the number of boxes it overlaps (closed test); returns the total.
-std::uint64_t countOverlapsBrute(const BoxesView& boxes, const Box* queries, std::size_t nQueries);
-// The same computation as a plain loop left to the compiler's auto-vectoriser (the baseline).
-std::uint64_t countOverlapsAutovec(const BoxesView& boxes, const Box* queries,
-                                   std::size_t nQueries);
+extern const Kernel<std::uint64_t(const BoxesView&, const Box*, std::size_t)> countOverlapsBrute,
+    countOverlapsBruteAutovec;
 
 // Tree queries (bvh.hpp): the total number of (query, box) overlaps, and the ids overlapping one
 // query appended to `out`.
@@ -143,20 +163,14 @@ struct SphereQuery {
   float x, y, z, r;
   float tolerance;  // kGeometryTolerance of point_tests.hpp, passed in to keep one definition
 };
-std::size_t sphereOverlapsSpheres(const SphereQuery& s, const SpheresView& v, std::uint32_t* out);
-std::size_t sphereOverlapsBoxes(const SphereQuery& s, const BoxesView& v, std::uint32_t* out);
-std::size_t pointInBoxes(float x, float y, float z, const BoxesView& v, std::uint32_t* out);
+extern const SelectKernel<SphereQuery, SpheresView> sphereOverlapsSpheres,
+    sphereOverlapsSpheresAutovec;
+extern const SelectKernel<SphereQuery, BoxesView> sphereOverlapsBoxes, sphereOverlapsBoxesAutovec;
+extern const Kernel<std::size_t(float, float, float, const BoxesView&, std::uint32_t*)>
+    pointInBoxes, pointInBoxesAutovec;
 // For every box, the point of it closest to (x, y, z), in three padded arrays.
-void closestPointsOnBoxes(float x, float y, float z, const BoxesView& v, float* cx, float* cy,
-                          float* cz);
-// The same four as plain loops left to the compiler's auto-vectoriser (benchmark baselines).
-std::size_t sphereOverlapsSpheresAutovec(const SphereQuery& s, const SpheresView& v,
-                                         std::uint32_t* out);
-std::size_t sphereOverlapsBoxesAutovec(const SphereQuery& s, const BoxesView& v,
-                                       std::uint32_t* out);
-std::size_t pointInBoxesAutovec(float x, float y, float z, const BoxesView& v, std::uint32_t* out);
-void closestPointsOnBoxesAutovec(float x, float y, float z, const BoxesView& v, float* cx,
-                                 float* cy, float* cz);
+extern const Kernel<void(float, float, float, const BoxesView&, float*, float*, float*)>
+    closestPointsOnBoxes, closestPointsOnBoxesAutovec;
 
 // The closest element a ray hits, t in [0, tMax] (the scalar raycast's rules), ties to the
 // smaller index; index = kNoHit when none. The ray's direction is unit.
@@ -168,34 +182,22 @@ struct StreamHit {
   float t;
 };
 inline constexpr std::uint32_t kNoHit = ~0u;
-StreamHit rayClosestBox(const RayQuery& ray, const BoxesView& v);
-StreamHit rayClosestSphere(const RayQuery& ray, const SpheresView& v);
-// The same two as plain loops left to the compiler's auto-vectoriser (benchmark baselines).
-StreamHit rayClosestBoxAutovec(const RayQuery& ray, const BoxesView& v);
-StreamHit rayClosestSphereAutovec(const RayQuery& ray, const SpheresView& v);
-// Triangles as nine SoA rows (vertex a, b, c; x, y, z), padding with zero area.
-struct TrianglesView {
-  const float* v[3][3];
-  std::size_t count, padded;
-};
+extern const Kernel<StreamHit(const RayQuery&, const BoxesView&)> rayClosestBox,
+    rayClosestBoxAutovec;
+extern const Kernel<StreamHit(const RayQuery&, const SpheresView&)> rayClosestSphere,
+    rayClosestSphereAutovec;
 // The ray's watertight precomputation (Woop, Benthin, Wald 2013; raycast.hpp's WatertightRay).
 struct WatertightQuery {
   float ox, oy, oz;
   int kx, ky, kz;
   float sx, sy, sz, tMax;
 };
-StreamHit rayClosestTriangle(const WatertightQuery& ray, const TrianglesView& v);
-StreamHit rayClosestTriangleAutovec(const WatertightQuery& ray, const TrianglesView& v);
+extern const Kernel<StreamHit(const WatertightQuery&, const TrianglesView&)> rayClosestTriangle,
+    rayClosestTriangleAutovec;
 
 // ---- geometry3d: one OBB against many (obb_batch.cpp) ------------------------------------------
-// OBBs as SoA: centre, half extents, axes (axis[c][k]: coordinate k of column c). No value makes
-// a separating-axis test fail, so kernels mask the lanes >= count instead of trusting the padding.
-struct ObbsView {
-  const float* center[3];
-  const float* half[3];
-  const float* axis[3][3];
-  std::size_t count, padded;
-};
+// No value makes a separating-axis test fail, so the kernel masks the lanes >= count instead of
+// trusting the padding.
 struct ObbQuery {
   float center[3], half[3], axis[3][3];
   float tolerance;  // kGeometryTolerance, passed in to keep one definition
@@ -203,34 +205,15 @@ struct ObbQuery {
 // The indices (ascending, room for `padded`) of the boxes for which intersect.hpp's
 // intersects(query, box) holds, bit for bit; returns their number. The plain-loop baseline (every
 // axis, no early exit, left to the auto-vectoriser) has the same contract.
-std::size_t obbOverlapsObbs(const ObbQuery& q, const ObbsView& v, std::uint32_t* out);
-std::size_t obbOverlapsObbsAutovec(const ObbQuery& q, const ObbsView& v, std::uint32_t* out);
+extern const SelectKernel<ObbQuery, ObbsView> obbOverlapsObbs, obbOverlapsObbsAutovec;
 
 // ---- W6: frustum culling ----------------------------------------------------------------------
 // Writes the indices of visible objects, ascending, to `out` (room for `padded` indices) and
 // returns how many. The plain-loop baselines have the same contract.
-std::size_t cullSpheres(const Planes& planes, const SpheresView& s, std::uint32_t* out);
-std::size_t cullBounds(const Planes& planes, const BoundsView& b, std::uint32_t* out);
-std::size_t cullSpheresAutovec(const Planes& planes, const SpheresView& s, std::uint32_t* out);
-std::size_t cullBoundsAutovec(const Planes& planes, const BoundsView& b, std::uint32_t* out);
+extern const SelectKernel<Planes, SpheresView> cullSpheres, cullSpheresAutovec;
+extern const SelectKernel<Planes, BoundsView> cullBounds, cullBoundsAutovec;
 
 // ---- geometry2d batch forms (geometry2d/batch.hpp, geometry2d/broadphase.hpp) ----------------
-// Circles as centre/radius SoA; padding has radius -inf.
-struct CirclesView {
-  const float *x, *y, *r;
-  std::size_t count, padded;
-};
-// Axis-aligned rectangles as min/max SoA; padding rectangles are empty (min = +inf, max = -inf).
-struct RectsView {
-  const float *minX, *minY, *maxX, *maxY;
-  std::size_t count, padded;
-};
-// Oriented rectangles as centre, half extents and the rotation's cosine and sine; padding has
-// half extents -inf.
-struct OrientedRectsView {
-  const float *cx, *cy, *hx, *hy, *cos, *sin;
-  std::size_t count, padded;
-};
 // One shape of each kind as the kernels take it. `tolerance` is kGeometry2dTolerance<float>,
 // passed in to keep one definition.
 struct CircleQuery2d {
@@ -245,25 +228,22 @@ struct OrientedRectQuery2d {
 struct PointQuery2d {
   float x, y, tolerance;
 };
-// How a kernel runs: Highway vectors (`kSimd`), or the same lane test as a plain loop over the
-// elements, left to the compiler's auto-vectoriser (`kAutovec`, the benchmarks' baseline).
-enum class Loop { kSimd, kAutovec };
 // Which elements a shape meets (closed tests), indices ascending in `out` (room for `padded`),
 // their number returned: exactly what intersects(query, element) and contains(element, point) of
 // geometry2d/ answer element by element, their arithmetic mirrored operation for operation.
-std::size_t circleOverlapsCircles(const CircleQuery2d& q, const CirclesView& v, std::uint32_t* out,
-                                  Loop loop = Loop::kSimd);
-std::size_t rectOverlapsRects(const RectQuery2d& q, const RectsView& v, std::uint32_t* out,
-                              Loop loop = Loop::kSimd);
-std::size_t orientedRectOverlapsOrientedRects(const OrientedRectQuery2d& q,
-                                              const OrientedRectsView& v, std::uint32_t* out,
-                                              Loop loop = Loop::kSimd);
-std::size_t pointInCircles(const PointQuery2d& p, const CirclesView& v, std::uint32_t* out,
-                           Loop loop = Loop::kSimd);
-std::size_t pointInRects(const PointQuery2d& p, const RectsView& v, std::uint32_t* out,
-                         Loop loop = Loop::kSimd);
-std::size_t pointInOrientedRects(const PointQuery2d& p, const OrientedRectsView& v,
-                                 std::uint32_t* out, Loop loop = Loop::kSimd);
+extern const SelectKernel<CircleQuery2d, CirclesView> circleOverlapsCircles,
+    circleOverlapsCirclesAutovec;
+extern const SelectKernel<RectQuery2d, RectsView> rectOverlapsRects, rectOverlapsRectsAutovec;
+extern const SelectKernel<OrientedRectQuery2d, OrientedRectsView> orientedRectOverlapsOrientedRects,
+    orientedRectOverlapsOrientedRectsAutovec;
+extern const SelectKernel<PointQuery2d, CirclesView> pointInCircles, pointInCirclesAutovec;
+extern const SelectKernel<PointQuery2d, RectsView> pointInRects, pointInRectsAutovec;
+extern const SelectKernel<PointQuery2d, OrientedRectsView> pointInOrientedRects,
+    pointInOrientedRectsAutovec;
+
+// How the 2D pair sweeps below run: Highway vectors, or the plain-loop baseline. (The batch
+// kernels above have Autovec twins instead; these two are to follow.)
+enum class Loop { kSimd, kAutovec };
 
 // 2D broadphase. One horizontal band's rectangles sorted by minX, each with its id and the first
 // band it covers (loBand), followed by kStreamPad sentinel entries (minX = +inf): the sweep

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -184,9 +185,9 @@ std::size_t ObbOverlapsObbs(const ObbQuery& query, const ObbsView& v, std::uint3
   return selectIndices(v.padded, out, [&](D, std::size_t i) {
     BoxLanes<V> b;
     for (int k = 0; k < 3; ++k) {
-      b.c[k] = hn::Load(d, v.center[k] + i);
-      b.h[k] = hn::Load(d, v.half[k] + i);
-      for (int j = 0; j < 3; ++j) b.u[j][k] = hn::Load(d, v.axis[j][k] + i);
+      b.c[k] = hn::Load(d, v[fields::Obb::center + k] + i);
+      b.h[k] = hn::Load(d, v[fields::Obb::half + k] + i);
+      for (int j = 0; j < 3; ++j) b.u[j][k] = hn::Load(d, v[fields::Obb::axis + 3 * j + k] + i);
     }
     // Lanes past the end start as separated: no padding value is inert for the SAT.
     const auto padding = hn::Not(hn::FirstN(d, v.count > i ? v.count - i : 0));
@@ -212,10 +213,10 @@ std::size_t ObbOverlapsObbsAutovec(const ObbQuery& query, const ObbsView& v, std
       BoxLanes<float> b;
 #pragma GCC unroll 3
       for (int k = 0; k < 3; ++k) {
-        b.c[k] = v.center[k][i];
-        b.h[k] = v.half[k][i];
+        b.c[k] = v[fields::Obb::center + k][i];
+        b.h[k] = v[fields::Obb::half + k][i];
 #pragma GCC unroll 3
-        for (int j = 0; j < 3; ++j) b.u[j][k] = v.axis[j][k][i];
+        for (int j = 0; j < 3; ++j) b.u[j][k] = v[fields::Obb::axis + 3 * j + k][i];
       }
       keep[e] = !satSeparated(q, b, false, [](bool) { return false; });
     }
@@ -233,14 +234,7 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(ObbOverlapsObbs);
-HWY_EXPORT(ObbOverlapsObbsAutovec);
-
-std::size_t obbOverlapsObbs(const ObbQuery& q, const ObbsView& v, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(ObbOverlapsObbs)(q, v, out);
-}
-std::size_t obbOverlapsObbsAutovec(const ObbQuery& q, const ObbsView& v, std::uint32_t* out) {
-  return HWY_DYNAMIC_DISPATCH(ObbOverlapsObbsAutovec)(q, v, out);
-}
+SIMDPHYS_EXPORT(ObbOverlapsObbs, obbOverlapsObbs);
+SIMDPHYS_EXPORT(ObbOverlapsObbsAutovec, obbOverlapsObbsAutovec);
 }  // namespace simdphys::simd
 #endif

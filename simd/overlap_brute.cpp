@@ -5,6 +5,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -35,7 +36,8 @@ std::uint64_t CountOverlapsBrute(const BoxesView& b, const Box* queries, std::si
     // Counts accumulate per lane (a true mask lane is -1) and are reduced once per block.
     auto counts = hn::Zero(di);
     for (std::size_t i = begin; i < end; i += hn::Lanes(d)) {
-      auto hit = overlap(d, b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ, i);
+      auto hit = overlap(d, b[fields::Box::minX], b[fields::Box::minY], b[fields::Box::minZ],
+                         b[fields::Box::maxX], b[fields::Box::maxY], b[fields::Box::maxZ], i);
       counts = hn::Sub(counts, hn::VecFromMask(di, hn::RebindMask(di, hit)));
     }
     return std::uint64_t(hn::GetLane(hn::SumOfLanes(di, counts)));
@@ -43,12 +45,14 @@ std::uint64_t CountOverlapsBrute(const BoxesView& b, const Box* queries, std::si
 }
 
 // Baseline: the same loop in plain C++, compiled for this target and left to the compiler.
-std::uint64_t CountOverlapsAutovec(const BoxesView& b, const Box* queries, std::size_t nQueries) {
+std::uint64_t CountOverlapsBruteAutovec(const BoxesView& b, const Box* queries,
+                                        std::size_t nQueries) {
   return blocked(b, queries, nQueries, [&](const Box& q, std::size_t begin, std::size_t end) {
     std::uint32_t count = 0;
     for (std::size_t i = begin; i < end; ++i)
-      count += (b.minX[i] <= q.maxX) & (q.minX <= b.maxX[i]) & (b.minY[i] <= q.maxY) &
-               (q.minY <= b.maxY[i]) & (b.minZ[i] <= q.maxZ) & (q.minZ <= b.maxZ[i]);
+      count += (b[fields::Box::minX][i] <= q.maxX) & (q.minX <= b[fields::Box::maxX][i]) &
+               (b[fields::Box::minY][i] <= q.maxY) & (q.minY <= b[fields::Box::maxY][i]) &
+               (b[fields::Box::minZ][i] <= q.maxZ) & (q.minZ <= b[fields::Box::maxZ][i]);
     return std::uint64_t(count);
   });
 }
@@ -59,14 +63,7 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(CountOverlapsBrute);
-HWY_EXPORT(CountOverlapsAutovec);
-
-std::uint64_t countOverlapsBrute(const BoxesView& b, const Box* queries, std::size_t nQueries) {
-  return HWY_DYNAMIC_DISPATCH(CountOverlapsBrute)(b, queries, nQueries);
-}
-std::uint64_t countOverlapsAutovec(const BoxesView& b, const Box* queries, std::size_t nQueries) {
-  return HWY_DYNAMIC_DISPATCH(CountOverlapsAutovec)(b, queries, nQueries);
-}
+SIMDPHYS_EXPORT(CountOverlapsBrute, countOverlapsBrute);
+SIMDPHYS_EXPORT(CountOverlapsBruteAutovec, countOverlapsBruteAutovec);
 }  // namespace simdphys::simd
 #endif

@@ -1,41 +1,24 @@
-// Streams seen through the plain views the SIMD kernels take.
+// What crosses from the library to the kernels: any stream as the one kernel view (view()), and
+// single shapes as the kernels' query structs.
 #pragma once
 
 #include "simd/kernels.hpp"
+#include "simdphys/geometry2d/primitives.hpp"
+#include "simdphys/geometry2d/streams.hpp"
 #include "simdphys/geometry3d.hpp"
 #include "simdphys/scene.hpp"
 
 namespace simdphys {
 
-inline simd::BoxesView view(const BoxStream& b) {
-  return {b.minX().data(), b.minY().data(), b.minZ().data(), b.maxX().data(),
-          b.maxY().data(), b.maxZ().data(), b.size(),        b.padded()};
-}
-
-inline simd::SpheresView view(const SphereStream& s) {
-  return {s.x().data(), s.y().data(), s.z().data(), s.r().data(), s.size(), s.padded()};
-}
-
-inline simd::BoundsView view(const BoundsStream& b) {
-  return {b.cx().data(), b.cy().data(), b.cz().data(), b.ex().data(),
-          b.ey().data(), b.ez().data(), b.size(),      b.padded()};
-}
-
-inline simd::TrianglesView view(const TriangleStream& t) {
-  simd::TrianglesView v{{}, t.size(), t.padded()};
-  for (int q = 0; q < 3; ++q)
-    for (int k = 0; k < 3; ++k) v.v[q][k] = t.vertex(q, k).data();
+// Any stream, read-only: its fields in layout order, its size and padded size.
+template <class Fields>
+core::View<Fields> view(const StreamSet<Fields>& s) {
+  core::View<Fields> v{{}, s.size(), s.padded()};
+  for (std::size_t f = 0; f < Fields::kCount; ++f) v.field[f] = s.field(f).data();
   return v;
 }
 
-inline simd::ObbsView view(const ObbStream& o) {
-  simd::ObbsView v{{}, {}, {}, o.size(), o.padded()};
-  for (int k = 0; k < 3; ++k) {
-    v.center[k] = o.center(k).data(), v.half[k] = o.halfExtent(k).data();
-    for (int c = 0; c < 3; ++c) v.axis[c][k] = o.axis(c, k).data();
-  }
-  return v;
-}
+// ---- 3D shapes -------------------------------------------------------------------------------
 
 inline simd::ObbQuery obbQuery(const Obb& b) {
   simd::ObbQuery q{};
@@ -58,6 +41,27 @@ inline simd::Planes planes(const Frustum& f) {
     p.nz[k] = f.planes[k].normal.z(), p.d[k] = f.planes[k].d;
   }
   return p;
+}
+
+// ---- 2D shapes -------------------------------------------------------------------------------
+
+inline simd::CircleQuery2d query2d(const Circle& c) {
+  return {c.center.x(), c.center.y(), c.radius, kGeometry2dTolerance<float>};
+}
+
+inline simd::RectQuery2d query2d(const Rect& r) {
+  return {r.min.x(), r.min.y(), r.max.x(), r.max.y()};
+}
+
+// The axes as OrientedRect::axes() computes them: column 0 is (cos, sin).
+inline simd::OrientedRectQuery2d query2d(const OrientedRect& b) {
+  const Mat2f axes = b.axes();
+  return {b.center.x(), b.center.y(), b.halfExtents.x(),          b.halfExtents.y(),
+          axes(0, 0),   axes(1, 0),   kGeometry2dTolerance<float>};
+}
+
+inline simd::PointQuery2d query2d(const Vec2f& p) {
+  return {p.x(), p.y(), kGeometry2dTolerance<float>};
 }
 
 }  // namespace simdphys

@@ -3,6 +3,7 @@
 
 #include "expect_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -79,6 +80,52 @@ TEST(Streams, RoundTripsValues) {
   Aabb c{{0, 0, 0}, {0, 0, 0}};  // a point is a valid (flat) box
   boxes.set(0, c);
   EXPECT_EQ(boxes[0].max, c.max);
+}
+
+// An owner writing a stream in place, as a class deriving from its StreamSet does (the scene's
+// model-space rays): live elements through writable(), whole vectors through overwrite().
+class OwnedSpheres : public SphereStream {
+ public:
+  void writeLive(std::size_t n, float value) {
+    resize(n);
+    for (std::size_t f = 0; f < kFields; ++f) {
+      EXPECT_EQ(writable(f).size(), n);
+      for (float& x : writable(f)) x = value;
+    }
+  }
+  void writeWholeVectors(std::size_t n, float value) {
+    overwrite(n, [&](const std::array<float*, kFields>& p) {
+      for (float* field : p) std::fill(field, field + paddedSize(n), value);
+    });
+  }
+};
+
+void expectLiveThenPadding(const OwnedSpheres& s, float value) {
+  for (std::size_t f = 0; f < OwnedSpheres::kFields; ++f)
+    for (std::size_t i = 0; i < s.padded(); ++i)
+      EXPECT_EQ(s.field(f)[i], i < s.size() ? value : fields::Sphere::kPad[f])
+          << "field " << f << ", element " << i;
+}
+
+TEST(Streams, OwnerWritesLeaveThePaddingInert) {
+  OwnedSpheres s;
+  s.writeLive(17, 7.0f);
+  expectLiveThenPadding(s, 7.0f);
+  s.writeWholeVectors(20, kNaN);  // a kernel storing whole vectors, padding included
+  ASSERT_EQ(s.size(), 20u);
+  for (std::size_t f = 0; f < OwnedSpheres::kFields; ++f)
+    for (std::size_t i = 20; i < s.padded(); ++i) EXPECT_EQ(s.field(f)[i], fields::Sphere::kPad[f]);
+  s.writeLive(3, -2.0f);  // shrinking turns live elements back into padding
+  expectLiveThenPadding(s, -2.0f);
+}
+
+TEST(Streams, PointStreamOverwriteRestoresThePadding) {
+  PointStream points;
+  points.overwrite(5, [](float* x, float* y, float* z) {
+    for (std::size_t i = 0; i < paddedSize(5); ++i) x[i] = y[i] = z[i] = kNaN;
+  });
+  for (std::size_t i = 5; i < points.padded(); ++i)
+    EXPECT_TRUE(points.x()[i] == 0 && points.y()[i] == 0 && points.z()[i] == 0) << i;
 }
 
 using test::expectError;

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "paths.hpp"
-#include "src/reference/cull.hpp"
+#include "testing/cull_reference.hpp"
 #include "workloads.hpp"
 
 namespace simdphys {

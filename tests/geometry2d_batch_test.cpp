@@ -15,12 +15,11 @@
 
 #include "expect_error.hpp"
 #include "paths.hpp"
-#include "simd/kernels.hpp"
 #include "simdphys/geometry2d/batch.hpp"
 #include "simdphys/geometry2d/broadphase.hpp"
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/point_tests.hpp"
-#include "src/geometry2d/views.hpp"
+#include "testing/kernels.hpp"
 #include "workloads.hpp"
 
 namespace simdphys {
@@ -281,21 +280,23 @@ TEST_P(Batch2d, PlainLoopBaselinesAgree) {
   const OrientedRectStream orects = randomOrientedRects(60, 500, 20);
   scenes::Random r(61);
   Ids simdIds, loopIds;
-  auto both = [&](auto kernel, const auto& query, const auto& stream) {
+  auto both = [&](auto kernel, auto plain, const auto& query, const auto& stream) {
     simdIds.resize(stream.padded()), loopIds.resize(stream.padded());
-    simdIds.resize(kernel(query2d(query), view(stream), simdIds.data(), simd::Loop::kSimd));
-    loopIds.resize(kernel(query2d(query), view(stream), loopIds.data(), simd::Loop::kAutovec));
+    simdIds.resize(kernel(query2d(query), view(stream), simdIds.data()));
+    loopIds.resize(plain(query2d(query), view(stream), loopIds.data()));
     EXPECT_EQ(simdIds, loopIds);
   };
   for (int q = 0; q < 50; ++q) {
     const Vec2f c(r.uniform(-20, 20), r.uniform(-20, 20));
-    both(simd::circleOverlapsCircles, Circle{c, r.uniform(0, 5)}, circles);
-    both(simd::rectOverlapsRects, Rect::fromCenter(c, Vec2f(3, 2)), rects);
-    both(simd::orientedRectOverlapsOrientedRects, orect(c.x(), c.y(), 3, 2, r.uniform(-4, 4)),
-         orects);
-    both(simd::pointInCircles, c, circles);
-    both(simd::pointInRects, c, rects);
-    both(simd::pointInOrientedRects, c, orects);
+    both(simd::circleOverlapsCircles, simd::circleOverlapsCirclesAutovec,
+         Circle{c, r.uniform(0, 5)}, circles);
+    both(simd::rectOverlapsRects, simd::rectOverlapsRectsAutovec, Rect::fromCenter(c, Vec2f(3, 2)),
+         rects);
+    both(simd::orientedRectOverlapsOrientedRects, simd::orientedRectOverlapsOrientedRectsAutovec,
+         orect(c.x(), c.y(), 3, 2, r.uniform(-4, 4)), orects);
+    both(simd::pointInCircles, simd::pointInCirclesAutovec, c, circles);
+    both(simd::pointInRects, simd::pointInRectsAutovec, c, rects);
+    both(simd::pointInOrientedRects, simd::pointInOrientedRectsAutovec, c, orects);
   }
 }
 

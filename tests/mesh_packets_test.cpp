@@ -13,7 +13,7 @@
 #include "mesh_oracles.hpp"
 #include "paths.hpp"
 #include "rays.hpp"
-#include "simd/kernels.hpp"
+#include "testing/kernels.hpp"
 
 namespace simdphys {
 namespace {

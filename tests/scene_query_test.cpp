@@ -5,7 +5,7 @@
 
 #include "paths.hpp"
 #include "scene_cases.hpp"
-#include "src/reference/cull.hpp"
+#include "testing/cull_reference.hpp"
 #include "workloads.hpp"
 
 namespace simdphys {

@@ -30,16 +30,15 @@ namespace simdphys {
 
 // Rays as SoA: origin, direction (any non-zero length; t is in units of it) and tMax (>= 0).
 // Padding rays have tMax = -inf and hit nothing.
-class RayStream : public StreamSet<7> {
+class RayStream : public StreamSet<fields::Ray> {
  public:
-  RayStream() : StreamSet({0, 0, 0, 0, 0, 1, -kPadInf}) {}
   // Throws Error naming the element: a coordinate not finite, a zero direction, tMax < 0 or NaN.
   void push(const Ray& ray, float tMax = std::numeric_limits<float>::infinity());
   Ray operator[](std::size_t i) const;
 
-  const Stream<float>& origin(int k) const { return fields_[k]; }
-  const Stream<float>& direction(int k) const { return fields_[3 + k]; }
-  const Stream<float>& tMax() const { return fields_[6]; }
+  const Stream<float>& origin(int k) const { return field(fields::Ray::origin + k); }
+  const Stream<float>& direction(int k) const { return field(fields::Ray::direction + k); }
+  const Stream<float>& tMax() const { return field(fields::Ray::tMax); }
 };
 
 // How MeshBvh::raycast traces a ray stream: one ray at a time, or in packets of 8 or 16 rays that

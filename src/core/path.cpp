@@ -12,7 +12,8 @@ constexpr const char* kReference = "reference";
 struct PathState {
   std::vector<std::string> paths;
   std::string active;
-  std::string error;  // set when SIMDPHYS_ISA names a path this machine lacks
+  bool reference = false;  // active == kReference, asked on every batch query
+  std::string error;       // set when SIMDPHYS_ISA names a path this machine lacks
 };
 
 PathState& state() {
@@ -37,6 +38,7 @@ void activate(PathState& s, std::string_view name) {
   }
   if (name != kReference) simd::selectTarget(std::string(name));
   s.active = std::string(name);
+  s.reference = name == kReference;
 }
 
 // SIMDPHYS_ISA is honoured on first use. A bad value is an error on every use until a path is
@@ -61,7 +63,7 @@ PathState& initialised() {
 
 std::vector<std::string> availablePaths() { return state().paths; }
 std::string activePath() { return initialised().active; }
-bool referencePathActive() { return initialised().active == kReference; }
+bool referencePathActive() { return initialised().reference; }
 
 void setPath(std::string_view name) {
   PathState& s = state();

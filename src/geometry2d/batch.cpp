@@ -4,79 +4,57 @@
 
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/point_tests.hpp"
-#include "views.hpp"
+#include "src/core/on_path.hpp"
+#include "src/views.hpp"
 
 namespace simdphys {
 namespace {
 
-// Runs `kernel` into room for a whole padded stream, or the scalar `test` per element.
-template <class Stream, class Test, class Kernel>
-std::size_t select(const Stream& stream, std::vector<std::uint32_t>& out, Test test,
-                   Kernel kernel) {
-  out.clear();
-  if (referencePathActive()) {
-    for (std::uint32_t i = 0; i < stream.size(); ++i)
-      if (test(stream[i])) out.push_back(i);
-    return out.size();
-  }
-  out.resize(stream.padded());  // kernels store whole vectors
-  out.resize(kernel(view(stream), out.data()));
-  return out.size();
+// One shape (or point) against a stream: validated, then `meets(shape, element)` per element on
+// the reference path, or the kernel on the shape's query.
+template <class Shape, class Stream, class Meets, class Kernel>
+std::size_t select(const char* where, const Shape& shape, const Stream& stream,
+                   std::vector<std::uint32_t>& out, Meets meets, Kernel kernel) {
+  validate(shape, where);
+  return selectOnPath(
+      view(stream), out, [&](std::uint32_t i) { return meets(shape, stream[i]); },
+      [&](const auto& v, std::uint32_t* o) { return kernel(query2d(shape), v, o); });
 }
 
-// Runs one shape against a stream: validated, then the scalar intersects or the kernel.
-template <class Shape, class Stream, class Kernel>
-std::size_t overlappingShape(const Shape& shape, const Stream& stream,
-                             std::vector<std::uint32_t>& out, Kernel kernel) {
-  validate(shape, "overlapping");
-  return select(
-      stream, out, [&](const auto& element) { return intersects(shape, element); },
-      [&](const auto& v, std::uint32_t* o) {
-        return kernel(query2d(shape), v, o, simd::Loop::kSimd);
-      });
-}
-
-template <class Stream, class Kernel>
-std::size_t containingPoint(const Vec2f& point, const Stream& stream,
-                            std::vector<std::uint32_t>& out, Kernel kernel) {
-  validate(point, "containing");
-  return select(
-      stream, out, [&](const auto& element) { return contains(element, point); },
-      [&](const auto& v, std::uint32_t* o) {
-        return kernel(query2d(point), v, o, simd::Loop::kSimd);
-      });
-}
+constexpr auto kIntersects = [](const auto& shape, const auto& e) { return intersects(shape, e); };
+constexpr auto kContains = [](const Vec2f& point, const auto& e) { return contains(e, point); };
 
 }  // namespace
 
 std::size_t overlapping(const Circle& circle, const CircleStream& circles,
                         std::vector<std::uint32_t>& out) {
-  return overlappingShape(circle, circles, out, simd::circleOverlapsCircles);
+  return select("overlapping", circle, circles, out, kIntersects, simd::circleOverlapsCircles);
 }
 
 std::size_t overlapping(const Rect& rect, const RectStream& rects,
                         std::vector<std::uint32_t>& out) {
-  return overlappingShape(rect, rects, out, simd::rectOverlapsRects);
+  return select("overlapping", rect, rects, out, kIntersects, simd::rectOverlapsRects);
 }
 
 std::size_t overlapping(const OrientedRect& rect, const OrientedRectStream& rects,
                         std::vector<std::uint32_t>& out) {
-  return overlappingShape(rect, rects, out, simd::orientedRectOverlapsOrientedRects);
+  return select("overlapping", rect, rects, out, kIntersects,
+                simd::orientedRectOverlapsOrientedRects);
 }
 
 std::size_t containing(const Vec2f& point, const CircleStream& circles,
                        std::vector<std::uint32_t>& out) {
-  return containingPoint(point, circles, out, simd::pointInCircles);
+  return select("containing", point, circles, out, kContains, simd::pointInCircles);
 }
 
 std::size_t containing(const Vec2f& point, const RectStream& rects,
                        std::vector<std::uint32_t>& out) {
-  return containingPoint(point, rects, out, simd::pointInRects);
+  return select("containing", point, rects, out, kContains, simd::pointInRects);
 }
 
 std::size_t containing(const Vec2f& point, const OrientedRectStream& rects,
                        std::vector<std::uint32_t>& out) {
-  return containingPoint(point, rects, out, simd::pointInOrientedRects);
+  return select("containing", point, rects, out, kContains, simd::pointInOrientedRects);
 }
 
 }  // namespace simdphys

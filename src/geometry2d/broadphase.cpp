@@ -8,7 +8,7 @@
 #include "../core/radix_sort.hpp"
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/quadtree.hpp"
-#include "views.hpp"
+#include "src/views.hpp"
 
 namespace simdphys {
 namespace reference {

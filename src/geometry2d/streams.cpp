@@ -1,40 +1,31 @@
 #include "simdphys/geometry2d/streams.hpp"
 
 namespace simdphys {
-using detail::at;
-using detail::requireIndex;
-
-void CircleStream::push(const Circle& c) {
-  validate(c, at("CircleStream::push", size()));
-  append({c.center.x(), c.center.y(), c.radius});
+namespace {
+std::array<float, 3> fieldsOf(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
+std::array<float, 4> fieldsOf(const Rect& r) {
+  return {r.min.x(), r.min.y(), r.max.x(), r.max.y()};
 }
+}  // namespace
+
+void CircleStream::push(const Circle& c) { pushValid("CircleStream::push", c, fieldsOf(c)); }
 
 void CircleStream::set(std::size_t i, const Circle& c) {
-  requireIndex(i, size(), "CircleStream::set");
-  validate(c, at("CircleStream::set", i));
-  store(i, {c.center.x(), c.center.y(), c.radius});
+  setValid("CircleStream::set", i, c, fieldsOf(c));
 }
 
-void RectStream::push(const Rect& r) {
-  validate(r, at("RectStream::push", size()));
-  append({r.min.x(), r.min.y(), r.max.x(), r.max.y()});
-}
+void RectStream::push(const Rect& r) { pushValid("RectStream::push", r, fieldsOf(r)); }
 
 void RectStream::set(std::size_t i, const Rect& r) {
-  requireIndex(i, size(), "RectStream::set");
-  validate(r, at("RectStream::set", i));
-  store(i, {r.min.x(), r.min.y(), r.max.x(), r.max.y()});
+  setValid("RectStream::set", i, r, fieldsOf(r));
 }
 
 void OrientedRectStream::push(const OrientedRect& r) {
-  validate(r, at("OrientedRectStream::push", size()));
-  append(fieldsOf(r));
+  pushValid("OrientedRectStream::push", r, fieldsOf(r));
 }
 
 void OrientedRectStream::set(std::size_t i, const OrientedRect& r) {
-  requireIndex(i, size(), "OrientedRectStream::set");
-  validate(r, at("OrientedRectStream::set", i));
-  store(i, fieldsOf(r));
+  setValid("OrientedRectStream::set", i, r, fieldsOf(r));
 }
 
 }  // namespace simdphys

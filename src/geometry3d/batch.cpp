@@ -1,28 +1,14 @@
 // Batch queries: the reference path loops over the scalar functions; the SIMD kernels mirror them.
 #include "simdphys/geometry3d/batch.hpp"
 
-#include "../views.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
+#include "src/core/on_path.hpp"
+#include "src/views.hpp"
 
 namespace simdphys {
 namespace {
-
-// Runs `kernel` into room for a whole padded stream, or the scalar `test` per element.
-template <class Test, class Kernel>
-std::size_t select(std::size_t n, std::size_t padded, std::vector<std::uint32_t>& out, Test test,
-                   Kernel kernel) {
-  out.clear();
-  if (referencePathActive()) {
-    for (std::uint32_t i = 0; i < n; ++i)
-      if (test(i)) out.push_back(i);
-    return out.size();
-  }
-  out.resize(padded);  // kernels store whole vectors
-  out.resize(kernel(out.data()));
-  return out.size();
-}
 
 simd::SphereQuery query(const Sphere& s) {
   return {s.center.x(), s.center.y(), s.center.z(), s.radius, kGeometryTolerance<float>};
@@ -55,31 +41,32 @@ std::optional<StreamHit> closest(const Ray& ray, const Stream& stream, float tMa
 std::size_t overlapping(const Sphere& s, const SphereStream& spheres,
                         std::vector<std::uint32_t>& out) {
   validate(s, "overlapping");
-  return select(
-      spheres.size(), spheres.padded(), out,
-      [&](std::uint32_t i) { return intersects(s, spheres[i]); },
-      [&](std::uint32_t* o) { return simd::sphereOverlapsSpheres(query(s), view(spheres), o); });
+  return selectOnPath(
+      view(spheres), out, [&](std::uint32_t i) { return intersects(s, spheres[i]); },
+      [&](const auto& v, std::uint32_t* o) { return simd::sphereOverlapsSpheres(query(s), v, o); });
 }
 
 std::size_t overlapping(const Sphere& s, const BoxStream& boxes, std::vector<std::uint32_t>& out) {
   validate(s, "overlapping");
-  return select(
-      boxes.size(), boxes.padded(), out, [&](std::uint32_t i) { return intersects(s, boxes[i]); },
-      [&](std::uint32_t* o) { return simd::sphereOverlapsBoxes(query(s), view(boxes), o); });
+  return selectOnPath(
+      view(boxes), out, [&](std::uint32_t i) { return intersects(s, boxes[i]); },
+      [&](const auto& v, std::uint32_t* o) { return simd::sphereOverlapsBoxes(query(s), v, o); });
 }
 
 std::size_t overlapping(const Obb& box, const ObbStream& boxes, std::vector<std::uint32_t>& out) {
   validate(box, "overlapping");
-  return select(
-      boxes.size(), boxes.padded(), out, [&](std::uint32_t i) { return intersects(box, boxes[i]); },
-      [&](std::uint32_t* o) { return simd::obbOverlapsObbs(obbQuery(box), view(boxes), o); });
+  return selectOnPath(
+      view(boxes), out, [&](std::uint32_t i) { return intersects(box, boxes[i]); },
+      [&](const auto& v, std::uint32_t* o) { return simd::obbOverlapsObbs(obbQuery(box), v, o); });
 }
 
 std::size_t containing(const Vec3f& p, const BoxStream& boxes, std::vector<std::uint32_t>& out) {
   detail::requireFiniteField(p, "containing", "point");
-  return select(
-      boxes.size(), boxes.padded(), out, [&](std::uint32_t i) { return contains(boxes[i], p); },
-      [&](std::uint32_t* o) { return simd::pointInBoxes(p.x(), p.y(), p.z(), view(boxes), o); });
+  return selectOnPath(
+      view(boxes), out, [&](std::uint32_t i) { return contains(boxes[i], p); },
+      [&](const auto& v, std::uint32_t* o) {
+        return simd::pointInBoxes(p.x(), p.y(), p.z(), v, o);
+      });
 }
 
 void closestPoints(const Vec3f& p, const BoxStream& boxes, PointStream& out) {

@@ -4,32 +4,35 @@
 
 namespace simdphys {
 using detail::at;
-using detail::requireIndex;
 
-void BoxStream::push(const Aabb& b) {
-  validate(b, at("BoxStream::push", size()));
-  append({b.min.x(), b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()});
+namespace {
+std::array<float, 6> fieldsOf(const Aabb& b) {
+  return {b.min.x(), b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()};
 }
+std::array<float, 4> fieldsOf(const Sphere& s) {
+  return {s.center.x(), s.center.y(), s.center.z(), s.radius};
+}
+std::array<float, 15> fieldsOf(const Obb& b) {
+  std::array<float, 15> x{};
+  for (int k = 0; k < 3; ++k) x[k] = b.center[k], x[3 + k] = b.halfExtents[k];
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) x[6 + 3 * c + k] = b.axes(k, c);
+  return x;
+}
+}  // namespace
 
-void BoxStream::set(std::size_t i, const Aabb& b) {
-  requireIndex(i, size(), "BoxStream::set");
-  validate(b, at("BoxStream::set", i));
-  store(i, {b.min.x(), b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()});
-}
+void BoxStream::push(const Aabb& b) { pushValid("BoxStream::push", b, fieldsOf(b)); }
+
+void BoxStream::set(std::size_t i, const Aabb& b) { setValid("BoxStream::set", i, b, fieldsOf(b)); }
 
 Aabb BoxStream::operator[](std::size_t i) const {
   return {{value(0, i), value(1, i), value(2, i)}, {value(3, i), value(4, i), value(5, i)}};
 }
 
-void SphereStream::push(const Sphere& s) {
-  validate(s, at("SphereStream::push", size()));
-  append({s.center.x(), s.center.y(), s.center.z(), s.radius});
-}
+void SphereStream::push(const Sphere& s) { pushValid("SphereStream::push", s, fieldsOf(s)); }
 
 void SphereStream::set(std::size_t i, const Sphere& s) {
-  requireIndex(i, size(), "SphereStream::set");
-  validate(s, at("SphereStream::set", i));
-  store(i, {s.center.x(), s.center.y(), s.center.z(), s.radius});
+  setValid("SphereStream::set", i, s, fieldsOf(s));
 }
 
 Sphere SphereStream::operator[](std::size_t i) const {
@@ -61,26 +64,9 @@ void TriangleStream::push(const Triangle& t) {
   append({t.a.x(), t.a.y(), t.a.z(), t.b.x(), t.b.y(), t.b.z(), t.c.x(), t.c.y(), t.c.z()});
 }
 
-namespace {
-std::array<float, 15> fieldsOf(const Obb& b) {
-  std::array<float, 15> x{};
-  for (int k = 0; k < 3; ++k) x[k] = b.center[k], x[3 + k] = b.halfExtents[k];
-  for (int c = 0; c < 3; ++c)
-    for (int k = 0; k < 3; ++k) x[6 + 3 * c + k] = b.axes(k, c);
-  return x;
-}
-}  // namespace
+void ObbStream::push(const Obb& b) { pushValid("ObbStream::push", b, fieldsOf(b)); }
 
-void ObbStream::push(const Obb& b) {
-  validate(b, at("ObbStream::push", size()));
-  append(fieldsOf(b));
-}
-
-void ObbStream::set(std::size_t i, const Obb& b) {
-  requireIndex(i, size(), "ObbStream::set");
-  validate(b, at("ObbStream::set", i));
-  store(i, fieldsOf(b));
-}
+void ObbStream::set(std::size_t i, const Obb& b) { setValid("ObbStream::set", i, b, fieldsOf(b)); }
 
 Obb ObbStream::operator[](std::size_t i) const {
   Obb b;

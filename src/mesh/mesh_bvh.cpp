@@ -1,5 +1,5 @@
 // MeshBvh: the build into triangle blocks, refit, and the single queries with their reference
-// path (ray streams: ray_stream.cpp).
+// path (ray streams: stream_tracing.cpp).
 #include "simdphys/mesh_bvh.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// What mesh_bvh.cpp and ray_stream.cpp share: the reference path's ray traversals and the kernels'
-// view of a tree.
+// What mesh_bvh.cpp and stream_tracing.cpp share: the reference path's ray traversals and the
+// kernels' view of a tree.
 #pragma once
 
 #include <span>

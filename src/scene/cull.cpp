@@ -1,34 +1,29 @@
-#include "../reference/cull.hpp"
-#include "../views.hpp"
+// Culling a stream against a frustum: the scalar per-object test on the reference path (the book's,
+// scene.hpp), the W6 kernels otherwise; both return the same indices.
+#include "src/core/on_path.hpp"
+#include "src/views.hpp"
 
 namespace simdphys {
-namespace {
-
-template <class Kernel>
-std::size_t compacted(std::size_t padded, std::vector<std::uint32_t>& visible, Kernel kernel) {
-  visible.resize(padded);  // CompressStore may write whole vectors past the count
-  visible.resize(kernel(visible.data()));
-  return visible.size();
-}
-
-}  // namespace
 
 std::size_t cull(const Frustum& f, const SphereStream& s, std::vector<std::uint32_t>& visible) {
   validate(f, "cull(SphereStream)");
-  if (referencePathActive())
-    return reference::cullSpheres(f, s.x().view(), s.y().view(), s.z().view(), s.r().view(),
-                                  visible);
-  return compacted(s.padded(), visible,
-                   [&](std::uint32_t* out) { return simd::cullSpheres(planes(f), view(s), out); });
+  return selectOnPath(
+      view(s), visible,
+      [&](std::uint32_t i) {
+        return f.intersectsSphere({s.x()[i], s.y()[i], s.z()[i]}, s.r()[i]);
+      },
+      [&](const auto& v, std::uint32_t* out) { return simd::cullSpheres(planes(f), v, out); });
 }
 
 std::size_t cull(const Frustum& f, const BoundsStream& b, std::vector<std::uint32_t>& visible) {
   validate(f, "cull(BoundsStream)");
-  if (referencePathActive())
-    return reference::cullBoxes(f, b.cx().view(), b.cy().view(), b.cz().view(), b.ex().view(),
-                                b.ey().view(), b.ez().view(), visible);
-  return compacted(b.padded(), visible,
-                   [&](std::uint32_t* out) { return simd::cullBounds(planes(f), view(b), out); });
+  return selectOnPath(
+      view(b), visible,
+      [&](std::uint32_t i) {
+        return f.intersectsBox({b.cx()[i], b.cy()[i], b.cz()[i]},
+                               {b.ex()[i], b.ey()[i], b.ez()[i]});
+      },
+      [&](const auto& v, std::uint32_t* out) { return simd::cullBounds(planes(f), v, out); });
 }
 
 }  // namespace simdphys

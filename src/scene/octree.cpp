@@ -5,10 +5,10 @@
 #include <limits>
 #include <string>
 
-#include "../reference/cull.hpp"
-#include "../views.hpp"
 #include "classify.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
+#include "src/core/on_path.hpp"
+#include "src/views.hpp"
 
 namespace simdphys {
 namespace {
@@ -262,14 +262,12 @@ void Octree::cullRange(const Frustum& f, std::uint32_t begin, std::uint32_t end,
   const std::size_t n = end - begin;
   if (n == 0) return;
   auto at = [&](int a) { return packed_[a].data() + begin; };
-  if (referencePathActive()) {
-    auto span = [&](int a) { return std::span<const float>(at(a), n); };
-    reference::cullBoxes(f, span(0), span(1), span(2), span(3), span(4), span(5), scratch);
-  } else {
-    scratch.resize(n);
-    const simd::BoundsView v{at(0), at(1), at(2), at(3), at(4), at(5), n, n};
-    scratch.resize(simd::cullBounds(planes(f), v, scratch.data()));
-  }
+  selectOnPath(
+      simd::BoundsView{{at(0), at(1), at(2), at(3), at(4), at(5)}, n, n}, scratch,
+      [&](std::uint32_t i) {
+        return f.intersectsBox({at(0)[i], at(1)[i], at(2)[i]}, {at(3)[i], at(4)[i], at(5)[i]});
+      },
+      [&](const auto& v, std::uint32_t* out) { return simd::cullBounds(planes(f), v, out); });
   for (std::uint32_t local : scratch) detail::markSeen(seen, packedIds_[begin + local]);
 }
 

@@ -102,20 +102,26 @@ struct RaySlabs {
   }
 };
 
-// Rays moved into a model's space, written straight into the stream's fields: RayStream::push
-// would validate each one again (they were validated entering the scene and an invertible
-// affine map keeps them finite and non-zero).
+// Rays moved into a model's space, written in place by their owner: RayStream::push would
+// validate each one again (they were validated entering the scene and an invertible affine map
+// keeps them finite and non-zero). writable() reaches only the live rays, so the padding stays
+// inert.
 class ModelRays : public RayStream {
  public:
   void fill(const RayStream& rays, std::span<const std::uint32_t> pick, const Mat4f& inverse) {
+    using F = fields::Ray;
     resize(pick.size());
+    std::span<float> origin[3], direction[3];
+    for (int a = 0; a < 3; ++a)
+      origin[a] = writable(F::origin + a), direction[a] = writable(F::direction + a);
+    const std::span<float> tMax = writable(F::tMax);
     for (std::size_t k = 0; k < pick.size(); ++k) {
       const std::uint32_t i = pick[k];
       const Vec3f o(rays.origin(0)[i], rays.origin(1)[i], rays.origin(2)[i]);
       const Vec3f d(rays.direction(0)[i], rays.direction(1)[i], rays.direction(2)[i]);
       const Vec3f lo = transformPoint(inverse, o), ld = transformDirection(inverse, d);
-      store(k, {lo.x(), lo.y(), lo.z(), ld.x(), ld.y(), ld.z(),
-                std::numeric_limits<float>::infinity()});
+      for (int a = 0; a < 3; ++a) origin[a][k] = lo[a], direction[a][k] = ld[a];
+      tMax[k] = std::numeric_limits<float>::infinity();
     }
   }
 };

@@ -12,33 +12,31 @@
 namespace simdphys {
 
 // Circles as centre and radius. Padding: radius -inf, which every test fails.
-class CircleStream : public StreamSet<3> {
+class CircleStream : public StreamSet<fields::Circle> {
  public:
-  CircleStream() : StreamSet({0, 0, -kPadInf}) {}
   void push(const Circle& circle);
   void set(std::size_t i, const Circle& circle);
   Circle operator[](std::size_t i) const { return {{value(0, i), value(1, i)}, value(2, i)}; }
 
-  const Stream<float>& x() const { return fields_[0]; }
-  const Stream<float>& y() const { return fields_[1]; }
-  const Stream<float>& r() const { return fields_[2]; }
+  const Stream<float>& x() const { return field(fields::Circle::x); }
+  const Stream<float>& y() const { return field(fields::Circle::y); }
+  const Stream<float>& r() const { return field(fields::Circle::r); }
 };
 
 // Axis-aligned rectangles as min/max corners, the layout of the exact overlap tests. Padding:
 // empty rectangles (min = +inf, max = -inf), which overlap and contain nothing.
-class RectStream : public StreamSet<4> {
+class RectStream : public StreamSet<fields::Rect> {
  public:
-  RectStream() : StreamSet({kPadInf, kPadInf, -kPadInf, -kPadInf}) {}
   void push(const Rect& rect);
   void set(std::size_t i, const Rect& rect);
   Rect operator[](std::size_t i) const {
     return {{value(0, i), value(1, i)}, {value(2, i), value(3, i)}};
   }
 
-  const Stream<float>& minX() const { return fields_[0]; }
-  const Stream<float>& minY() const { return fields_[1]; }
-  const Stream<float>& maxX() const { return fields_[2]; }
-  const Stream<float>& maxY() const { return fields_[3]; }
+  const Stream<float>& minX() const { return field(fields::Rect::minX); }
+  const Stream<float>& minY() const { return field(fields::Rect::minY); }
+  const Stream<float>& maxX() const { return field(fields::Rect::maxX); }
+  const Stream<float>& maxY() const { return field(fields::Rect::maxY); }
 };
 
 // Oriented rectangles as centre, half extents and rotation, with the rotation's cosine and sine
@@ -46,22 +44,25 @@ class RectStream : public StreamSet<4> {
 // (std::cos and std::sin of the float angle), so kernels read the same axes the scalar functions
 // use without a transcendental per test. Padding: half extents -inf, axes the identity; kernels
 // that could make a NaN of it (-inf * 0) mask padded lanes out by the sign of the half extent.
-class OrientedRectStream : public StreamSet<7> {
+class OrientedRectStream : public StreamSet<fields::OrientedRect> {
  public:
-  OrientedRectStream() : StreamSet({0, 0, -kPadInf, -kPadInf, 1, 0, 0}) {}
   void push(const OrientedRect& rect);
   void set(std::size_t i, const OrientedRect& rect);
   OrientedRect operator[](std::size_t i) const {
     return {{value(0, i), value(1, i)}, {value(2, i), value(3, i)}, value(6, i)};
   }
 
-  const Stream<float>& cx() const { return fields_[0]; }
-  const Stream<float>& cy() const { return fields_[1]; }
-  const Stream<float>& hx() const { return fields_[2]; }
-  const Stream<float>& hy() const { return fields_[3]; }
-  const Stream<float>& cos() const { return fields_[4]; }  // cos(rotation): local x = (cos, sin)
-  const Stream<float>& sin() const { return fields_[5]; }  // sin(rotation): local y = (-sin, cos)
-  const Stream<float>& rotation() const { return fields_[6]; }
+  const Stream<float>& cx() const { return field(fields::OrientedRect::cx); }
+  const Stream<float>& cy() const { return field(fields::OrientedRect::cy); }
+  const Stream<float>& hx() const { return field(fields::OrientedRect::hx); }
+  const Stream<float>& hy() const { return field(fields::OrientedRect::hy); }
+  const Stream<float>& cos() const {
+    return field(fields::OrientedRect::cos);
+  }  // cos(rotation): local x = (cos, sin)
+  const Stream<float>& sin() const {
+    return field(fields::OrientedRect::sin);
+  }  // sin(rotation): local y = (-sin, cos)
+  const Stream<float>& rotation() const { return field(fields::OrientedRect::rotation); }
 
  private:
   static std::array<float, 7> fieldsOf(const OrientedRect& r) {

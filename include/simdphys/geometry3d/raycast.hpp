@@ -48,6 +48,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "simdphys/detail/float_math.hpp"
 #include "simdphys/geometry3d/primitives.hpp"
 #include "simdphys/math.hpp"
 
@@ -119,25 +120,8 @@ Vec3<T> unitOr(const Vec3<T>& v, const Vec3<T>& fallback) {
   return detail::unitOr(v, fallback);
 }
 
-// a * b - c * d with the sign exact when the rounded result is 0 (the only case in which the
-// watertight test needs more): float recomputes in double, where the products are exact; double
-// adds the exact remainders of its products (fma), whose difference is then the exact one.
-// Separate statements keep Clang's default contraction (within an expression) from fusing a
-// product into the subtraction; GCC's -ffp-contract=fast would still do it (see the top note).
-template <class T>
-T differenceOfProducts(T a, T b, T c, T d) {
-  const T ab = a * b;
-  const T cd = c * d;
-  const T r = ab - cd;
-  if (r != 0) return r;
-  if constexpr (std::is_same_v<T, float>) {
-    const double abd = double(a) * double(b);
-    const double cdd = double(c) * double(d);
-    return T(abd - cdd);
-  } else {
-    return std::fma(a, b, -ab) - std::fma(c, d, -cd);
-  }
-}
+// a * b - c * d with the sign exact when the rounded result is 0 (detail/float_math.hpp).
+using detail::differenceOfProducts;
 
 // The slab test of the line o + t d against the closed box [lo, hi], t in units of d. Near and far
 // planes are chosen by the sign bit of d (that of 1/d; -0 counts as negative, as 1/-0 = -inf), so

@@ -6,11 +6,13 @@
 
 #include <array>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 
 #include "simdphys/core.hpp"
 #include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/stream_fields.hpp"
 
 namespace simdphys {
 
@@ -24,93 +26,128 @@ inline void requireIndex(std::size_t i, std::size_t size, std::string_view where
 }
 }  // namespace detail
 
-// N float fields of one length, each with its own padding value: what every stream is made of.
-template <std::size_t N>
+// The float fields of a layout (stream_fields.hpp), of one length, each padded with the layout's
+// inert value: what every stream is made of. Readers see a field as a whole padded Stream; the
+// owner (the derived stream) writes live elements in place through writable(), which cannot
+// reach the padding, or whole vectors through overwrite(), which restores it after.
+template <class Fields>
 class StreamSet {
  public:
+  using Layout = Fields;
+  static constexpr std::size_t kFields = Fields::kCount;
+
+  // Every field empty, with the layout's padding.
+  StreamSet() {
+    for (std::size_t k = 0; k < kFields; ++k) fields_[k] = Stream<float>(Fields::kPad[k]);
+  }
+
   std::size_t size() const { return fields_[0].size(); }
   std::size_t padded() const { return fields_[0].padded(); }
+  // Field f (a name of the layout: fields::Box::minX, ...), with its padding.
+  const Stream<float>& field(std::size_t f) const { return fields_[f]; }
   void reserve(std::size_t n) {
     for (Stream<float>& f : fields_) f.reserve(n);
   }
   void clear() { resize(0); }
 
  protected:
-  explicit StreamSet(const std::array<float, N>& pads) {
-    for (std::size_t k = 0; k < N; ++k) fields_[k] = Stream<float>(pads[k]);
-  }
   void resize(std::size_t n) {
     for (Stream<float>& f : fields_) f.resize(n);
   }
-  void store(std::size_t i, const std::array<float, N>& values) {
-    for (std::size_t k = 0; k < N; ++k) fields_[k][i] = values[k];
+  void store(std::size_t i, const std::array<float, kFields>& values) {
+    for (std::size_t k = 0; k < kFields; ++k) fields_[k][i] = values[k];
   }
-  void append(const std::array<float, N>& values) {
+  void append(const std::array<float, kFields>& values) {
     resize(size() + 1);
     store(size() - 1, values);
   }
   float value(std::size_t k, std::size_t i) const { return fields_[k][i]; }
+  // push and set of a stream of shapes: the shape checked by its validate() (primitives.hpp),
+  // errors named by `where` ("BoxStream::push") and the element, then its values stored. A
+  // rejected shape changes nothing.
+  template <class Shape>
+  void pushValid(const char* where, const Shape& shape, const std::array<float, kFields>& values) {
+    validate(shape, detail::at(where, size()));
+    append(values);
+  }
+  template <class Shape>
+  void setValid(const char* where, std::size_t i, const Shape& shape,
+                const std::array<float, kFields>& values) {
+    detail::requireIndex(i, size(), where);
+    validate(shape, detail::at(where, i));
+    store(i, values);
+  }
+  // Field f's size() live elements, to write in place: the padding is out of reach, so it stays
+  // inert whatever the owner writes.
+  std::span<float> writable(std::size_t f) { return fields_[f].view(); }
+  // Makes the stream n long and lets write(p) fill every field, p[f] pointing at field f's padded
+  // array (kernels store whole vectors, padding included); the padding is restored after.
+  template <class Writer>
+  void overwrite(std::size_t n, Writer write) {
+    resize(n);
+    std::array<float*, kFields> p;
+    for (std::size_t k = 0; k < kFields; ++k) p[k] = fields_[k].data();
+    write(p);
+    resize(n);
+  }
 
-  std::array<Stream<float>, N> fields_;
+ private:
+  std::array<Stream<float>, kFields> fields_;
 };
 
-inline constexpr float kPadInf = std::numeric_limits<float>::infinity();
+using fields::kPadInf;
 
 // Boxes as min/max corners, the layout of overlap tests. Padding: empty boxes (min = +inf,
 // max = -inf), which overlap nothing.
-class BoxStream : public StreamSet<6> {
+class BoxStream : public StreamSet<fields::Box> {
  public:
-  BoxStream() : StreamSet({kPadInf, kPadInf, kPadInf, -kPadInf, -kPadInf, -kPadInf}) {}
   void push(const Aabb& box);
   void set(std::size_t i, const Aabb& box);
   Aabb operator[](std::size_t i) const;
 
-  const Stream<float>& minX() const { return fields_[0]; }
-  const Stream<float>& minY() const { return fields_[1]; }
-  const Stream<float>& minZ() const { return fields_[2]; }
-  const Stream<float>& maxX() const { return fields_[3]; }
-  const Stream<float>& maxY() const { return fields_[4]; }
-  const Stream<float>& maxZ() const { return fields_[5]; }
+  const Stream<float>& minX() const { return field(fields::Box::minX); }
+  const Stream<float>& minY() const { return field(fields::Box::minY); }
+  const Stream<float>& minZ() const { return field(fields::Box::minZ); }
+  const Stream<float>& maxX() const { return field(fields::Box::maxX); }
+  const Stream<float>& maxY() const { return field(fields::Box::maxY); }
+  const Stream<float>& maxZ() const { return field(fields::Box::maxZ); }
 };
 
 // Spheres as centre and radius. Padding: radius -inf, which every test fails.
-class SphereStream : public StreamSet<4> {
+class SphereStream : public StreamSet<fields::Sphere> {
  public:
-  SphereStream() : StreamSet({0, 0, 0, -kPadInf}) {}
   void push(const Sphere& sphere);
   void set(std::size_t i, const Sphere& sphere);
   Sphere operator[](std::size_t i) const;
 
-  const Stream<float>& x() const { return fields_[0]; }
-  const Stream<float>& y() const { return fields_[1]; }
-  const Stream<float>& z() const { return fields_[2]; }
-  const Stream<float>& r() const { return fields_[3]; }
+  const Stream<float>& x() const { return field(fields::Sphere::x); }
+  const Stream<float>& y() const { return field(fields::Sphere::y); }
+  const Stream<float>& z() const { return field(fields::Sphere::z); }
+  const Stream<float>& r() const { return field(fields::Sphere::r); }
 };
 
 // Boxes as centre and half extents, the layout of culling (n.c + d + |n|.h needs no
 // conversion, so no rounding is added to the inputs). push checks that the box, centre +- half
 // extents, lies in the supported range, so operator[]'s min and max are finite and in range.
 // Padding: extents -inf.
-class BoundsStream : public StreamSet<6> {
+class BoundsStream : public StreamSet<fields::Bounds> {
  public:
-  BoundsStream() : StreamSet({0, 0, 0, -kPadInf, -kPadInf, -kPadInf}) {}
   void push(const Vec3f& center, const Vec3f& halfExtents);
   Aabb operator[](std::size_t i) const;  // as min/max, for single queries
 
-  const Stream<float>& cx() const { return fields_[0]; }
-  const Stream<float>& cy() const { return fields_[1]; }
-  const Stream<float>& cz() const { return fields_[2]; }
-  const Stream<float>& ex() const { return fields_[3]; }
-  const Stream<float>& ey() const { return fields_[4]; }
-  const Stream<float>& ez() const { return fields_[5]; }
+  const Stream<float>& cx() const { return field(fields::Bounds::cx); }
+  const Stream<float>& cy() const { return field(fields::Bounds::cy); }
+  const Stream<float>& cz() const { return field(fields::Bounds::cz); }
+  const Stream<float>& ex() const { return field(fields::Bounds::ex); }
+  const Stream<float>& ey() const { return field(fields::Bounds::ey); }
+  const Stream<float>& ez() const { return field(fields::Bounds::ez); }
 };
 
 // Triangles as the SoA of their vertices (a triangle soup). Degenerate triangles (collinear
 // vertices: the normal, computed in double, is exactly zero) are rejected, as they have no
 // surface to hit. Padding: all vertices at the origin, which no ray hits (no area).
-class TriangleStream : public StreamSet<9> {
+class TriangleStream : public StreamSet<fields::Triangle> {
  public:
-  TriangleStream() : StreamSet({0, 0, 0, 0, 0, 0, 0, 0, 0}) {}
   void push(const Triangle& t);
   Triangle operator[](std::size_t i) const {
     return {{value(0, i), value(1, i), value(2, i)},
@@ -118,7 +155,9 @@ class TriangleStream : public StreamSet<9> {
             {value(6, i), value(7, i), value(8, i)}};
   }
   // Vertex v (0, 1, 2 for a, b, c), coordinate k (0, 1, 2 for x, y, z).
-  const Stream<float>& vertex(int v, int k) const { return fields_[3 * v + k]; }
+  const Stream<float>& vertex(int v, int k) const {
+    return field(fields::Triangle::vertex + 3 * v + k);
+  }
 };
 
 // Oriented boxes: centre, half extents and the 3 x 3 axes (columns: the box's local x, y, z, as in
@@ -126,37 +165,35 @@ class TriangleStream : public StreamSet<9> {
 // right-handed axes). Padding: a point box at the origin with identity axes. No value makes a
 // separating-axis test fail for every query (its arithmetic reads NaN and inf as "not
 // separated"), so this stream's padding is not inert by value: kernels mask lanes >= size().
-class ObbStream : public StreamSet<15> {
+class ObbStream : public StreamSet<fields::Obb> {
  public:
-  ObbStream() : StreamSet({0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}) {}
   void push(const Obb& box);
   void set(std::size_t i, const Obb& box);
   Obb operator[](std::size_t i) const;
 
   // Coordinate k (0, 1, 2 for x, y, z) of the centre and of the half extents.
-  const Stream<float>& center(int k) const { return fields_[k]; }
-  const Stream<float>& halfExtent(int k) const { return fields_[3 + k]; }
+  const Stream<float>& center(int k) const { return field(fields::Obb::center + k); }
+  const Stream<float>& halfExtent(int k) const { return field(fields::Obb::half + k); }
   // Coordinate k of axis `column` (axes(k, column) of ObbT).
-  const Stream<float>& axis(int column, int k) const { return fields_[6 + 3 * column + k]; }
+  const Stream<float>& axis(int column, int k) const {
+    return field(fields::Obb::axis + 3 * column + k);
+  }
 };
 
 // Points, the output of batch closest-point queries. Padding: zeros.
-class PointStream : public StreamSet<3> {
+class PointStream : public StreamSet<fields::Point> {
  public:
-  PointStream() : StreamSet({0, 0, 0}) {}
   void push(const Vec3f& p);
   Vec3f operator[](std::size_t i) const { return {value(0, i), value(1, i), value(2, i)}; }
   // Makes the stream n points long and lets `write(x, y, z)` fill them (it may write the padding
   // too, which is restored after).
   template <class Writer>
   void overwrite(std::size_t n, Writer write) {
-    resize(n);
-    write(fields_[0].data(), fields_[1].data(), fields_[2].data());
-    resize(n);
+    StreamSet::overwrite(n, [&](const std::array<float*, 3>& p) { write(p[0], p[1], p[2]); });
   }
-  const Stream<float>& x() const { return fields_[0]; }
-  const Stream<float>& y() const { return fields_[1]; }
-  const Stream<float>& z() const { return fields_[2]; }
+  const Stream<float>& x() const { return field(fields::Point::x); }
+  const Stream<float>& y() const { return field(fields::Point::y); }
+  const Stream<float>& z() const { return field(fields::Point::z); }
 };
 
 }  // namespace simdphys

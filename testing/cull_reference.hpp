@@ -1,4 +1,6 @@
-// Scalar reference for culling: the book's per-object test in a loop, in any precision.
+// Test support: the book's per-object culling test in a loop, in any precision (the library culls
+// with the same test on its reference path; double is the truth the benchmarks measure float
+// against). Internal: not installed.
 #pragma once
 
 #include <cstdint>
