@@ -5,6 +5,9 @@
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
+// The reference path calls these per element: their definitions, so that they inline.
+#include "src/reference/geometry3d/intersect-inl.hpp"
+#include "src/reference/geometry3d/raycast-inl.hpp"
 
 namespace simdphys {
 namespace {

@@ -11,6 +11,10 @@
 #include "simdphys/geometry3d/raycast.hpp"
 #include "src/mesh/mesh_internal.hpp"
 
+// Overlap and linetest queries call these per triangle: their definitions, so that they inline.
+#include "src/reference/geometry3d/intersect-inl.hpp"
+#include "src/reference/geometry3d/raycast-inl.hpp"
+
 namespace simdphys {
 
 // ---- the reference path: the same traversal, a scalar core ----------------------------------
