@@ -4,6 +4,8 @@
 
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/point_tests.hpp"
+// The reference path calls these per element: their definitions, so that they inline.
+#include "src/reference/geometry2d/collisions-inl.hpp"
 #include "views.hpp"
 
 namespace simdphys {
