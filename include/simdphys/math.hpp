@@ -4,9 +4,10 @@
 // The conventions are fixed once in docs/conventions.md: right-handed, +y up, column vectors,
 // view looks down -z, clip depth in [0, 1], pixel (0,0) top-left with y down, radians.
 //
-// Everything is a header-only template on the scalar type (float or double). Vector and matrix
-// parameters accept any Eigen expression of the right size and scalar (e.g. Vec3f::UnitZ(), a - b);
-// scalar parameters take their type from the first one. Bad input throws simdphys::Error.
+// Everything is a template on the scalar type (float or double); the larger bodies are compiled
+// once for both in src/reference/math.cpp. Vector and matrix parameters accept any Eigen
+// expression of the right size and scalar (e.g. Vec3f::UnitZ(), a - b); scalar parameters take
+// their type from the first one. Bad input throws simdphys::Error.
 #pragma once
 
 #include <Eigen/Core>
@@ -285,6 +286,26 @@ T cofactorUnchecked(const Eigen::Matrix<T, N, N>& m, Eigen::Index r, Eigen::Inde
   return (r + c) % 2 == 0 ? mi : -mi;
 }
 
+// The bodies of the functions below that take Eigen expressions: each function converts its
+// arguments to plain vectors and matrices and calls one of these, compiled once for float and
+// double (src/reference/math.cpp).
+template <std::floating_point T>
+Vec3<T> matrixToEuler(const Mat3<T>& r);
+template <std::floating_point T>
+Mat4<T> transform(const Vec3<T>& s, const Mat3<T>& r, const Vec3<T>& t);
+template <std::floating_point T>
+Mat4<T> transform(const Vec3<T>& scale, const Quat<T>& q, const Vec3<T>& translation);
+template <std::floating_point T>
+Vec3<T> transformPoint(const Mat4<T>& m, const Vec3<T>& p);
+template <std::floating_point T>
+Vec3<T> transformDirection(const Mat4<T>& m, const Vec3<T>& d);
+template <std::floating_point T>
+Mat4<T> lookAt(const Vec3<T>& e, const Vec3<T>& t, const Vec3<T>& u);
+template <std::floating_point T>
+Vec3<T> unproject(const Vec3<T>& w, const Vec4<T>& vp, const Mat4<T>& inv);
+template <std::floating_point T>
+ScreenRay<T> screenToRay(T px, T py, const Vec4<T>& viewport, const Mat4<T>& view,
+                         const Mat4<T>& projection);
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
@@ -336,34 +357,17 @@ detail::SquareOf<D> adjugate(const Eigen::MatrixBase<D>& m) {
 // the origin (right-hand rule): rotationZ(pi/2) maps +x to +y.
 
 template <std::floating_point T>
-Mat3<T> rotationX(T angle) {
-  const T c = std::cos(angle), s = std::sin(angle);
-  Mat3<T> r;
-  r << 1, 0, 0, 0, c, -s, 0, s, c;
-  return r;
-}
+Mat3<T> rotationX(T angle);
 
 template <std::floating_point T>
-Mat3<T> rotationY(T angle) {
-  const T c = std::cos(angle), s = std::sin(angle);
-  Mat3<T> r;
-  r << c, 0, s, 0, 1, 0, -s, 0, c;
-  return r;
-}
+Mat3<T> rotationY(T angle);
 
 template <std::floating_point T>
-Mat3<T> rotationZ(T angle) {
-  const T c = std::cos(angle), s = std::sin(angle);
-  Mat3<T> r;
-  r << c, -s, 0, s, c, 0, 0, 0, 1;
-  return r;
-}
+Mat3<T> rotationZ(T angle);
 
 // R = Ry(yaw) * Rx(pitch) * Rz(roll): roll is applied first, yaw last.
 template <std::floating_point T>
-Mat3<T> eulerToMatrix(T pitch, detail::NoDeduce<T> yaw, detail::NoDeduce<T> roll) {
-  return rotationY(yaw) * rotationX(pitch) * rotationZ(roll);
-}
+Mat3<T> eulerToMatrix(T pitch, detail::NoDeduce<T> yaw, detail::NoDeduce<T> roll);
 
 // Inverse of eulerToMatrix for a rotation matrix: returns (pitch, yaw, roll) with pitch in
 // [-pi/2, pi/2], yaw and roll in [-pi, pi]. At gimbal lock (cos(pitch) <= 16 epsilon) yaw and
@@ -373,16 +377,7 @@ Mat3<T> eulerToMatrix(T pitch, detail::NoDeduce<T> yaw, detail::NoDeduce<T> roll
 template <class D>
 Vec3<typename D::Scalar> matrixToEuler(const Eigen::MatrixBase<D>& rotation) {
   using T = typename D::Scalar;
-  const Mat3<T> r = rotation;
-  // Row 1 of Ry*Rx*Rz is (cos(p) sin(r), cos(p) cos(r), -sin(p)).
-  const T cosPitch = std::sqrt(r(1, 0) * r(1, 0) + r(1, 1) * r(1, 1));
-  const T pitch = std::atan2(-r(1, 2), cosPitch);
-  const T roll =
-      cosPitch > 16 * std::numeric_limits<T>::epsilon() ? std::atan2(r(1, 0), r(1, 1)) : T(0);
-  // Column 0 of R * Rz(roll)^T = Ry(yaw) * Rx(pitch) is (cos(yaw), 0, -sin(yaw)).
-  const T cr = std::cos(roll), sr = std::sin(roll);
-  const T yaw = std::atan2(sr * r(2, 1) - cr * r(2, 0), cr * r(0, 0) - sr * r(0, 1));
-  return Vec3<T>(pitch, yaw, roll);
+  return detail::matrixToEuler<T>(rotation);
 }
 
 // Rotation by `angle` about `axis` (any length; normalised here). Throws on a zero or non-finite
@@ -407,13 +402,7 @@ Mat4<typename DS::Scalar> transform(const Eigen::MatrixBase<DS>& scale,
                                     const Eigen::MatrixBase<DR>& rotation,
                                     const Eigen::MatrixBase<DT>& translation) {
   using T = typename DS::Scalar;
-  const Vec3<T> s = scale;
-  const Mat3<T> r = rotation;
-  const Vec3<T> t = translation;
-  Mat4<T> m = Mat4<T>::Identity();
-  m.template topLeftCorner<3, 3>() = r * s.asDiagonal();
-  m.template topRightCorner<3, 1>() = t;
-  return m;
+  return detail::transform<T>(scale, rotation, translation);
 }
 
 // Same with a quaternion, normalised here (Eigen's toRotationMatrix assumes unit length).
@@ -423,9 +412,7 @@ Mat4<typename DS::Scalar> transform(const Eigen::MatrixBase<DS>& scale,
                                     const Eigen::QuaternionBase<Q>& rotation,
                                     const Eigen::MatrixBase<DT>& translation) {
   using T = typename DS::Scalar;
-  const Quat<T> q = rotation;
-  const Vec4<T> unit = detail::normalized(q.coeffs(), "transform", "rotation quaternion");
-  return transform(scale, Quat<T>(unit).toRotationMatrix(), translation);
+  return detail::transform<T>(scale, Quat<T>(rotation), translation);
 }
 
 // Applies m to the point p (w = 1). If m is affine (last row exactly 0 0 0 1) the result is used
@@ -435,12 +422,7 @@ template <class DM, class DP>
 Vec3<typename DM::Scalar> transformPoint(const Eigen::MatrixBase<DM>& matrix,
                                          const Eigen::MatrixBase<DP>& point) {
   using T = typename DM::Scalar;
-  const Mat4<T> m = matrix;
-  const Vec3<T> p = point;
-  const Vec4<T> h = m * p.homogeneous();
-  const bool affine = m(3, 0) == 0 && m(3, 1) == 0 && m(3, 2) == 0 && m(3, 3) == 1;
-  if (affine) return h.template head<3>();
-  return h.template head<3>() / h.w();
+  return detail::transformPoint<T>(matrix, point);
 }
 
 // Applies m to the direction d (w = 0): translation is ignored. Normals need the inverse
@@ -449,9 +431,7 @@ template <class DM, class DD>
 Vec3<typename DM::Scalar> transformDirection(const Eigen::MatrixBase<DM>& matrix,
                                              const Eigen::MatrixBase<DD>& direction) {
   using T = typename DM::Scalar;
-  const Mat4<T> m = matrix;
-  const Vec3<T> d = direction;
-  return m.template topLeftCorner<3, 3>() * d;
+  return detail::transformDirection<T>(matrix, direction);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -466,28 +446,7 @@ Mat4<typename DE::Scalar> lookAt(const Eigen::MatrixBase<DE>& eye,
                                  const Eigen::MatrixBase<DT>& target,
                                  const Eigen::MatrixBase<DU>& up) {
   using T = typename DE::Scalar;
-  const Vec3<T> e = eye, t = target, u = up;
-  detail::requireFinite(e, "lookAt", "eye");
-  detail::requireFinite(t, "lookAt", "target");
-  detail::requireFinite(u, "lookAt", "up");
-  if (e == t) detail::fail("lookAt", "eye and target coincide");
-  const Vec3<T> forward = detail::normalized(t - e, "lookAt", "target - eye");
-  const Vec3<T> side = forward.cross(detail::normalized(u, "lookAt", "up"));
-  // |side| = sin(angle between up and forward); the cross product's own rounding is ~3 epsilon,
-  // so below a few times that the side direction would be noise.
-  const T sinAngle = side.norm();
-  if (sinAngle <= 16 * std::numeric_limits<T>::epsilon())
-    detail::fail("lookAt", "up is parallel to the view direction");
-  const Vec3<T> right = side / sinAngle;
-  const Vec3<T> trueUp = right.cross(forward);
-  Mat4<T> m;
-  m << right.transpose(), -right.dot(e),   //
-      trueUp.transpose(), -trueUp.dot(e),  //
-      -forward.transpose(), forward.dot(e), 0, 0, 0, 1;
-  // The rotation is unit; only the translation (dot products with eye) can overflow.
-  if (!detail::usableMatrix(m, {}))
-    detail::fail("lookAt", std::string("eye is too far from the origin") + detail::kUnusable);
-  return m;
+  return detail::lookAt<T>(eye, target, up);
 }
 
 // View-to-clip matrix (as glm::perspectiveRH_ZO): the view point at distance zNear in front of
@@ -496,29 +455,7 @@ Mat4<typename DE::Scalar> lookAt(const Eigen::MatrixBase<DE>& eye,
 // matrix's entries come out finite and non-zero (no aspect of 1e-40).
 template <std::floating_point T>
 Mat4<T> perspective(T fovY, detail::NoDeduce<T> aspect, detail::NoDeduce<T> zNear,
-                    detail::NoDeduce<T> zFar) {
-  if (!(fovY > 0 && fovY < std::numbers::pi_v<T>))
-    detail::fail("perspective", "fovY must be in (0, pi) radians, got " + detail::str(fovY));
-  if (!(aspect > 0 && std::isfinite(aspect)))
-    detail::fail("perspective", "aspect must be positive and finite, got " + detail::str(aspect));
-  if (!(zNear > 0 && std::isfinite(zNear)))
-    detail::fail("perspective", "zNear must be positive and finite, got " + detail::str(zNear));
-  if (!(zFar > zNear && std::isfinite(zFar)))
-    detail::fail("perspective", "zFar must be finite and greater than zNear, got zNear " +
-                                    detail::str(zNear) + ", zFar " + detail::str(zFar));
-  const T f = 1 / std::tan(fovY / 2);
-  Mat4<T> m = Mat4<T>::Zero();
-  m(0, 0) = f / aspect;
-  m(1, 1) = f;
-  m(2, 2) = zFar / (zNear - zFar);
-  m(2, 3) = zNear * m(2, 2);  // = -zNear zFar / (zFar - zNear); makes depth(zNear) exactly 0
-  m(3, 2) = -1;               // w = distance in front of the camera
-  if (!detail::usableMatrix(m, {{0, 0}, {1, 1}, {2, 2}, {2, 3}}))
-    detail::fail("perspective", "fovY " + detail::str(fovY) + ", aspect " + detail::str(aspect) +
-                                    ", zNear " + detail::str(zNear) + ", zFar " +
-                                    detail::str(zFar) + detail::kUnusable);
-  return m;
-}
+                    detail::NoDeduce<T> zFar);
 
 // View-to-clip matrix of the box [left, right] x [bottom, top] x [-zFar, -zNear] (as
 // glm::orthoRH_ZO): the box maps onto [-1, 1]^2 x [0, 1]. Throws on a non-finite bound or an
@@ -526,30 +463,7 @@ Mat4<T> perspective(T fovY, detail::NoDeduce<T> aspect, detail::NoDeduce<T> zNea
 // overflow or vanish; to mirror an axis, scale instead.
 template <std::floating_point T>
 Mat4<T> orthographic(T left, detail::NoDeduce<T> right, detail::NoDeduce<T> bottom,
-                     detail::NoDeduce<T> top, detail::NoDeduce<T> zNear, detail::NoDeduce<T> zFar) {
-  detail::requireFinite(left, "orthographic", "left");
-  detail::requireFinite(right, "orthographic", "right");
-  detail::requireFinite(bottom, "orthographic", "bottom");
-  detail::requireFinite(top, "orthographic", "top");
-  detail::requireFinite(zNear, "orthographic", "zNear");
-  detail::requireFinite(zFar, "orthographic", "zFar");
-  if (!(right > left)) detail::fail("orthographic", "empty x range: right <= left");
-  if (!(top > bottom)) detail::fail("orthographic", "empty y range: top <= bottom");
-  if (!(zFar > zNear)) detail::fail("orthographic", "empty depth range: zFar <= zNear");
-  Mat4<T> m = Mat4<T>::Identity();
-  m(0, 0) = 2 / (right - left);
-  m(1, 1) = 2 / (top - bottom);
-  m(2, 2) = -1 / (zFar - zNear);
-  m(0, 3) = -(right + left) / (right - left);
-  m(1, 3) = -(top + bottom) / (top - bottom);
-  m(2, 3) = -zNear / (zFar - zNear);
-  if (!detail::usableMatrix(m, {{0, 0}, {1, 1}, {2, 2}}))
-    detail::fail("orthographic", "left " + detail::str(left) + ", right " + detail::str(right) +
-                                     ", bottom " + detail::str(bottom) + ", top " +
-                                     detail::str(top) + ", zNear " + detail::str(zNear) +
-                                     ", zFar " + detail::str(zFar) + detail::kUnusable);
-  return m;
-}
+                     detail::NoDeduce<T> top, detail::NoDeduce<T> zNear, detail::NoDeduce<T> zFar);
 
 // ---------------------------------------------------------------------------------------------
 // Picking. Window coordinates are (px, py, depth): pixels from the top-left corner of the
@@ -563,15 +477,7 @@ Vec3<typename DW::Scalar> unproject(const Eigen::MatrixBase<DW>& windowPoint,
                                     const Eigen::MatrixBase<DV>& viewport,
                                     const Eigen::MatrixBase<DM>& inverseViewProj) {
   using T = typename DW::Scalar;
-  const Vec3<T> w = windowPoint;
-  const Vec4<T> vp = viewport;
-  const Mat4<T> inv = inverseViewProj;
-  detail::requireViewport(vp, "unproject");
-  const Vec4<T> ndc(2 * (w.x() - vp[0]) / vp[2] - 1,  // x right
-                    1 - 2 * (w.y() - vp[1]) / vp[3],  // pixel y grows down, NDC y up
-                    w.z(), 1);
-  const Vec4<T> h = inv * ndc;
-  return h.template head<3>() / h.w();
+  return detail::unproject<T>(windowPoint, viewport, inverseViewProj);
 }
 
 // World ray through the window point (px, py) (continuous pixel coordinates as for unproject):
@@ -584,14 +490,7 @@ ScreenRay<typename DV::Scalar> screenToRay(typename DV::Scalar px, typename DV::
                                            const Eigen::MatrixBase<DW>& view,
                                            const Eigen::MatrixBase<DP>& projection) {
   using T = typename DV::Scalar;
-  const Mat4<T> inv = (Mat4<T>(projection) * Mat4<T>(view)).inverse();
-  const Vec3<T> nearPoint = unproject(Vec3<T>(px, py, 0), viewport, inv);
-  const Vec3<T> farPoint = unproject(Vec3<T>(px, py, 1), viewport, inv);
-  if (!nearPoint.allFinite() || !farPoint.allFinite())
-    detail::fail("screenToRay",
-                 "the pixel does not unproject to a finite point (non-finite pixel, "
-                 "or singular view or projection)");
-  return {nearPoint, detail::normalized(farPoint - nearPoint, "screenToRay", "far - near")};
+  return detail::screenToRay<T>(px, py, viewport, view, projection);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -640,11 +539,7 @@ typename DA::Scalar angleBetween(const Eigen::MatrixBase<DA>& a, const Eigen::Ma
 template <std::floating_point T>
 bool nearlyEqual(T a, detail::NoDeduce<T> b,
                  detail::NoDeduce<T> relTol = std::numeric_limits<T>::epsilon(),
-                 detail::NoDeduce<T> absTol = std::numeric_limits<T>::epsilon()) {
-  if (a == b) return true;
-  if (!std::isfinite(a) || !std::isfinite(b)) return false;  // else inf <= eps * inf passes
-  return std::abs(a - b) <= std::max(absTol, relTol * std::max(std::abs(a), std::abs(b)));
-}
+                 detail::NoDeduce<T> absTol = std::numeric_limits<T>::epsilon());
 
 // Same for vectors and matrices, on Euclidean (Frobenius) norms rather than per component as in
 // the book: the test does not depend on the orientation of the axes.

@@ -5,6 +5,8 @@
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/point_tests.hpp"
 #include "src/core/on_path.hpp"
+// The reference path calls these per element: their definitions, so that they inline.
+#include "src/reference/geometry2d/collisions-inl.hpp"
 #include "src/views.hpp"
 
 namespace simdphys {

@@ -8,6 +8,8 @@
 #include "../core/radix_sort.hpp"
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/quadtree.hpp"
+// The brute-force pairs call intersects per pair: its definition, so that it inlines.
+#include "src/reference/geometry2d/collisions-inl.hpp"
 #include "src/views.hpp"
 
 namespace simdphys {

@@ -5,6 +5,9 @@
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
 #include "src/core/on_path.hpp"
+// The reference path calls these per element: their definitions, so that they inline.
+#include "src/reference/geometry3d/intersect-inl.hpp"
+#include "src/reference/geometry3d/raycast-inl.hpp"
 #include "src/views.hpp"
 
 namespace simdphys {

@@ -12,6 +12,10 @@
 #include "src/bvh/scalar_walk.hpp"
 #include "src/mesh/mesh_internal.hpp"
 
+// Overlap and linetest queries call these per triangle: their definitions, so that they inline.
+#include "src/reference/geometry3d/intersect-inl.hpp"
+#include "src/reference/geometry3d/raycast-inl.hpp"
+
 namespace simdphys {
 
 // ---- the reference path: the same walk, a scalar core -------------------------------------

@@ -17,95 +17,45 @@
 
 namespace simdphys {
 
-namespace detail::g2 {
-
-// The parameter in [0, 1] of the point of the segment from 0 to d closest to r (both relative to
-// the segment's start); 0 for a zero-length segment.
-template <class T>
-T segmentParameter(const Vec2<T>& d, const Vec2<T>& r) {
-  const T dd = d.squaredNorm();
-  if (!(dd > 0)) return T(0);
-  return std::clamp(r.dot(d) / dd, T(0), T(1));
-}
-
-// p in the local frame of an oriented rectangle: axes^T (p - center).
-template <class T>
-Vec2<T> toLocal(const OrientedRectT<T>& b, const Mat2<T>& axes, const Vec2<T>& p) {
-  return axes.transpose() * (p - b.center);
-}
-
-}  // namespace detail::g2
-
 // ---- containment ----------------------------------------------------------------------------
 
 // On the segment: distance to it <= tolerance * max(|p - start|, length). A zero-length segment
 // contains only its point.
 template <class T>
-bool contains(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& point) {
-  const Vec2<T> d = segment.end - segment.start;
-  const Vec2<T> r = point - segment.start;
-  const T t = detail::g2::segmentParameter(d, r);
-  return (r - t * d).norm() <= kGeometry2dTolerance<T> * std::max(r.norm(), d.norm());
-}
+bool contains(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& point);
 
 // Closed disc: |p - c| <= r, within the tolerance times max(|p - c|, r). A zero-radius circle
 // contains only its center.
 template <class T>
-bool contains(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point) {
-  const T distance = (point - circle.center).norm();
-  return distance <= circle.radius + kGeometry2dTolerance<T> * std::max(distance, circle.radius);
-}
+bool contains(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point);
 
 // Closed rectangle, exact: min <= p <= max on both axes.
 template <class T>
-bool contains(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point) {
-  return (rect.min.array() <= point.array()).all() && (point.array() <= rect.max.array()).all();
-}
+bool contains(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point);
 
 // Closed oriented rectangle: |local| <= halfExtents on both axes, within the tolerance times
 // |p - c| + the larger half extent (the rotation into the local frame rounds by about 2 eps |p -
 // c|).
 template <class T>
-bool contains(const OrientedRectT<T>& box, const detail::NoDeduce<Vec2<T>>& point) {
-  const Vec2<T> offset = point - box.center;
-  const Vec2<T> local = box.axes().transpose() * offset;
-  const T excess = (local.cwiseAbs() - box.halfExtents).maxCoeff();
-  return excess <= kGeometry2dTolerance<T> * (offset.norm() + box.halfExtents.maxCoeff());
-}
+bool contains(const OrientedRectT<T>& box, const detail::NoDeduce<Vec2<T>>& point);
 
 // ---- closest points -------------------------------------------------------------------------
 
 // start + t (end - start), t the clamped projection parameter; the start for a zero-length one.
 template <class T>
-Vec2<T> closestPoint(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& point) {
-  const Vec2<T> d = segment.end - segment.start;
-  return segment.start + detail::g2::segmentParameter<T>(d, point - segment.start) * d;
-}
+Vec2<T> closestPoint(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& point);
 
 // The point of the solid disc closest to p: p itself when inside, else the boundary point towards
 // p. Never divides by zero (outside means |p - c| > r >= 0).
 template <class T>
-Vec2<T> closestPoint(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point) {
-  const Vec2<T> offset = point - circle.center;
-  const T distance = offset.norm();
-  if (distance <= circle.radius) return point;
-  return circle.center + offset * (circle.radius / distance);
-}
+Vec2<T> closestPoint(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point);
 
 // p clamped to the rectangle on each axis: exact.
 template <class T>
-Vec2<T> closestPoint(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point) {
-  return point.cwiseMax(rect.min).cwiseMin(rect.max);
-}
+Vec2<T> closestPoint(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point);
 
 // p clamped to the rectangle in its local frame; a point inside is returned unchanged (exactly).
 template <class T>
-Vec2<T> closestPoint(const OrientedRectT<T>& box, const detail::NoDeduce<Vec2<T>>& point) {
-  const Mat2<T> axes = box.axes();
-  const Vec2<T> local = detail::g2::toLocal(box, axes, point);
-  const Vec2<T> clamped = local.cwiseMax(-box.halfExtents).cwiseMin(box.halfExtents);
-  if (clamped == local) return point;
-  return box.center + axes * clamped;
-}
+Vec2<T> closestPoint(const OrientedRectT<T>& box, const detail::NoDeduce<Vec2<T>>& point);
 
 }  // namespace simdphys
