@@ -3,8 +3,8 @@
 #include "simd/kernels.hpp"
 #include "simdphys/broadphase.hpp"
 #include "simdphys/bvh.hpp"
-#include "src/broadphase/pairs.hpp"
 #include "src/views.hpp"
+#include "testing/pairs.hpp"
 
 namespace simdphys::bench {
 namespace {
@@ -59,12 +59,12 @@ void registerQueries(std::size_t n) {
 }
 
 // Times a persistent PairFinder (as a world steps it), so allocation is not what is measured.
-template <class FindPairs>
+template <class Finder = PairFinder, class FindPairs>
 void pairsBody(benchmark::State& state, std::size_t n, FindPairs findPairsNow) {
   const auto& w = aabbWorkload(n);
   const auto& ref = aabbReference(n);
   std::vector<Pair> pairs;
-  PairFinder finder;
+  Finder finder;
   findPairsNow(finder, w.boxes, pairs);  // warm-up: the scratch memory reaches its size
   for (auto _ : state) {
     findPairsNow(finder, w.boxes, pairs);
@@ -91,7 +91,14 @@ void registerPairs(std::size_t n) {
   }
   registerPerPath(
       "aabb_pairs", "autovec", n,
-      [n](benchmark::State& state) { pairsBody(state, n, detail::findPairsAutovec); }, false);
+      [n](benchmark::State& state) {
+        pairsBody<test::PlainLoopPairFinder>(
+            state, n,
+            [](test::PlainLoopPairFinder& f, const BoxStream& b, std::vector<Pair>& p) {
+              f.find(b, p, PairMethod::kGridSweep);
+            });
+      },
+      false);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/point_tests.hpp"
 #include "src/geometry2d/views.hpp"
+#include "testing/pairs.hpp"
 #include "workloads.hpp"
 
 namespace simdphys {
@@ -457,13 +458,13 @@ TEST_P(Broadphase2d, EveryMethodEqualsBruteForce) {
 
 TEST_P(Broadphase2d, PlainLoopBaselinesEqualBruteForce) {
   if (referencePathActive()) GTEST_SKIP() << "the baselines are compiled per SIMD target";
-  PairFinder2d finder;
+  test::PlainLoopPairFinder2d finder;
   std::vector<Pair> pairs;
   for (const RectSet& set : rectSets()) {
     const std::vector<Pair> want = bruteForcePairs(set.rects);
     for (PairMethod2d method :
          {PairMethod2d::kBandedSweep, PairMethod2d::kSweep, PairMethod2d::kBrute}) {
-      detail::findPairs2dAutovec(finder, set.rects, pairs, method);
+      finder.find(set.rects, pairs, method);
       EXPECT_EQ(pairs, want) << set.name << ", method " << int(method);
     }
   }
