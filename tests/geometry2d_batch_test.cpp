@@ -13,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "box_sets.hpp"
 #include "expect_error.hpp"
 #include "paths.hpp"
 #include "simd/kernels.hpp"
@@ -376,14 +377,7 @@ TEST(Streams2d, RejectBadElementsNamingThem) {
 
 // ---- broadphase ---------------------------------------------------------------------------------
 
-// Brute force over intersects(Rect, Rect), sorted by construction: the oracle.
-std::vector<Pair> bruteForcePairs(const RectStream& r) {
-  std::vector<Pair> pairs;
-  for (std::uint32_t i = 0; i < r.size(); ++i)
-    for (std::uint32_t j = i + 1; j < r.size(); ++j)
-      if (intersects(r[i], r[j])) pairs.push_back({i, j});
-  return pairs;
-}
+using test::bruteForcePairs;  // over intersects(Rect, Rect): the oracle (box_sets.hpp)
 
 struct RectSet {
   std::string name;

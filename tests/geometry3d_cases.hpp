@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "expect_error.hpp"
-#include "scenes/workloads.hpp"
+#include "workloads/workloads.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "typed.hpp"

@@ -9,8 +9,6 @@
 
 #include "box_sets.hpp"
 #include "paths.hpp"
-#include "simdphys/geometry2d/broadphase.hpp"
-#include "simdphys/geometry2d/collisions.hpp"
 
 namespace simdphys {
 namespace {
@@ -22,14 +20,7 @@ constexpr PairMethod2d kMethods2d[] = {PairMethod2d::kAuto, PairMethod2d::kBande
                                        PairMethod2d::kSweep, PairMethod2d::kBrute,
                                        PairMethod2d::kQuadtree};
 
-std::vector<Pair> bruteForcePairs(const RectStream& r) {
-  std::vector<Pair> pairs;
-  for (std::uint32_t i = 0; i < r.size(); ++i)
-    for (std::uint32_t j = i + 1; j < r.size(); ++j)
-      if (intersects(r[i], r[j])) pairs.push_back({i, j});
-  return pairs;
-}
-std::vector<Pair> bruteForcePairs(const BoxStream& b) { return test::bruteForcePairs(b); }
+using test::bruteForcePairs;
 
 // The oracle: set operations on the brute-force lists, not the finders' merge.
 PairEvents expectedEvents(const std::vector<Pair>& before, const std::vector<Pair>& now) {

@@ -12,10 +12,6 @@
 #include "simdphys/bvh.hpp"
 
 namespace simdphys {
-namespace reference {
-#include "core/sweep-inl.hpp"
-}  // namespace reference
-
 namespace {
 
 // Boxes per grid cell the grid aims at: few enough that the sweep's candidate lists along x stay

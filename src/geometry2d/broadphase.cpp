@@ -12,10 +12,6 @@
 #include "views.hpp"
 
 namespace simdphys {
-namespace reference {
-#include "core/sweep-inl.hpp"
-}  // namespace reference
-
 namespace {
 
 // Rectangles per band the banded sweep aims at, and the least band height in mean rectangle
