@@ -93,8 +93,7 @@ void registerPairs(std::size_t n) {
       "aabb_pairs", "autovec", n,
       [n](benchmark::State& state) {
         pairsBody<test::PlainLoopPairFinder>(
-            state, n,
-            [](test::PlainLoopPairFinder& f, const BoxStream& b, std::vector<Pair>& p) {
+            state, n, [](test::PlainLoopPairFinder& f, const BoxStream& b, std::vector<Pair>& p) {
               f.find(b, p, PairMethod::kGridSweep);
             });
       },
