@@ -2,8 +2,8 @@
 #include "bench_common.hpp"
 #include "simdphys/broadphase.hpp"
 #include "simdphys/bvh.hpp"
-#include "src/broadphase/pairs.hpp"
 #include "testing/kernels.hpp"
+#include "testing/pairs.hpp"
 
 namespace simdphys::bench {
 namespace {
@@ -58,12 +58,12 @@ void registerQueries(std::size_t n) {
 }
 
 // Times a persistent PairFinder (as a world steps it), so allocation is not what is measured.
-template <class FindPairs>
+template <class Finder = PairFinder, class FindPairs>
 void pairsBody(benchmark::State& state, std::size_t n, FindPairs findPairsNow) {
   const auto& w = aabbWorkload(n);
   const auto& ref = aabbReference(n);
   std::vector<Pair> pairs;
-  PairFinder finder;
+  Finder finder;
   findPairsNow(finder, w.boxes, pairs);  // warm-up: the scratch memory reaches its size
   for (auto _ : state) {
     findPairsNow(finder, w.boxes, pairs);
@@ -90,7 +90,13 @@ void registerPairs(std::size_t n) {
   }
   registerPerPath(
       "aabb_pairs", "autovec", n,
-      [n](benchmark::State& state) { pairsBody(state, n, detail::findPairsAutovec); }, false);
+      [n](benchmark::State& state) {
+        pairsBody<test::PlainLoopPairFinder>(
+            state, n, [](test::PlainLoopPairFinder& f, const BoxStream& b, std::vector<Pair>& p) {
+              f.find(b, p, PairMethod::kGridSweep);
+            });
+      },
+      false);
 }
 
 }  // namespace

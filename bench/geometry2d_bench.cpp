@@ -9,6 +9,7 @@
 #include "simdphys/geometry2d/batch.hpp"
 #include "simdphys/geometry2d/broadphase.hpp"
 #include "testing/kernels.hpp"
+#include "testing/pairs.hpp"
 
 namespace simdphys::bench {
 namespace {
@@ -27,11 +28,11 @@ const scenes::Shapes2dWorkload& shapes2dWorkload(std::size_t n) {
 
 // Times a persistent finder (as a world steps it) on the active path; items are the pairs found,
 // so items_per_second is pairs per second.
-template <class Find>
+template <class Finder = PairFinder2d, class Find>
 void pairsBody(benchmark::State& state, std::size_t n, Find find) {
   const auto& w = shapes2dWorkload(n);
   const auto& ref = scenes::shapes2dReference(n);
-  PairFinder2d finder;
+  Finder finder;
   std::vector<Pair> pairs;
   find(finder, w.bounds, pairs);  // warm-up: the scratch memory reaches its size
   for (auto _ : state) {
@@ -69,9 +70,11 @@ void registerPairs(std::size_t n) {
     registerPerPath(
         "pairs2d", std::string(name) + "_autovec", n,
         [n, m = method](benchmark::State& state) {
-          pairsBody(state, n, [m](PairFinder2d& f, const RectStream& r, std::vector<Pair>& p) {
-            detail::findPairs2dAutovec(f, r, p, m);
-          });
+          pairsBody<test::PlainLoopPairFinder2d>(
+              state, n,
+              [m](test::PlainLoopPairFinder2d& f, const RectStream& r, std::vector<Pair>& p) {
+                f.find(r, p, m);
+              });
         },
         false);
   }

@@ -18,7 +18,7 @@ namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-#include "src/geometry2d/sweep-inl.hpp"
+#include "core/sweep-inl.hpp"
 
 // Calls `emit(k)` for each set lane k of the mask, lowest first.
 template <class D, class M, class Emit>
@@ -31,7 +31,7 @@ HWY_INLINE void forEachLane(D d, M mask, Emit emit) {
 }
 
 void SweepRects2d(const SortedRects2d& c, std::vector<Pair>& out, Loop loop) {
-  if (loop == Loop::kAutovec) return sweepRects2dScalar(c, out);
+  if (loop == Loop::kAutovec) return sweepScalar(c, out);
   const hn::ScalableTag<float> d;
   const std::size_t lanes = hn::Lanes(d);
   for (std::size_t i = 0; i < c.count; ++i) {
@@ -45,7 +45,7 @@ void SweepRects2d(const SortedRects2d& c, std::vector<Pair>& out, Loop loop) {
                                             hn::Le(minY, hn::LoadU(d, c.maxY + j))));
       if (hn::AllFalse(d, hit)) continue;
       forEachLane(d, hit, [&](std::size_t k) {
-        if (bandOwnsPair(c, i, j + k)) out.push_back(orderedPair2d(c.id[i], c.id[j + k]));
+        if (ownsPair(c, i, j + k)) out.push_back(orderedPair(c.id[i], c.id[j + k]));
       });
     }
   }

@@ -15,7 +15,7 @@ namespace simdphys::simd {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-#include "src/broadphase/sweep-inl.hpp"
+#include "core/sweep-inl.hpp"
 
 void SweepCell(const simd::SweepCell& c, std::vector<Pair>& out) {
   const hn::ScalableTag<float> d;
@@ -46,7 +46,7 @@ void SweepCell(const simd::SweepCell& c, std::vector<Pair>& out) {
   }
 }
 
-void SweepCellAutovec(const simd::SweepCell& c, std::vector<Pair>& out) { sweepCellScalar(c, out); }
+void SweepCellAutovec(const simd::SweepCell& c, std::vector<Pair>& out) { sweepScalar(c, out); }
 
 }  // namespace HWY_NAMESPACE
 }  // namespace simdphys::simd

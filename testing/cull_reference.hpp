@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "simdphys/scene.hpp"
+#include "simdphys/scene/frustum.hpp"
 
 namespace simdphys::reference {
 

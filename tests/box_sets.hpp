@@ -1,4 +1,4 @@
-// Box sets for the BVH and broadphase tests: random ones and named hard cases.
+// Box sets for the BVH and broadphase tests: random ones and named hard cases; the pair oracles.
 #pragma once
 
 #include <algorithm>
@@ -7,6 +7,8 @@
 
 #include "simdphys/broadphase.hpp"
 #include "simdphys/bvh.hpp"
+#include "simdphys/geometry2d/broadphase.hpp"
+#include "simdphys/geometry2d/collisions.hpp"
 #include "workloads.hpp"
 
 namespace simdphys::test {
@@ -67,12 +69,14 @@ inline std::vector<BoxSet> hardBoxSets() {
   return sets;
 }
 
-// Brute force, in the order (a, b) sorted: the oracle.
-inline std::vector<Pair> bruteForcePairs(const BoxStream& b) {
+// Brute force, in the order (a, b) sorted: the oracle, for boxes and for rectangles (overlaps(),
+// the closed test: intersects(Rect, Rect) in 2D).
+template <class Stream>
+std::vector<Pair> bruteForcePairs(const Stream& s) {
   std::vector<Pair> pairs;
-  for (std::uint32_t i = 0; i < b.size(); ++i)
-    for (std::uint32_t j = i + 1; j < b.size(); ++j)
-      if (overlaps(b[i], b[j])) pairs.push_back({i, j});
+  for (std::uint32_t i = 0; i < s.size(); ++i)
+    for (std::uint32_t j = i + 1; j < s.size(); ++j)
+      if (overlaps(s[i], s[j])) pairs.push_back({i, j});
   return pairs;
 }
 

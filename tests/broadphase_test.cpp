@@ -5,6 +5,7 @@
 
 #include "box_sets.hpp"
 #include "paths.hpp"
+#include "testing/pairs.hpp"
 
 namespace simdphys {
 namespace {
@@ -66,6 +67,35 @@ TEST_P(Pairs, OrderIsDeterministicAndPathIndependent) {
   }
   EXPECT_EQ(here, again);
   EXPECT_EQ(here, reference);
+}
+
+// Every method returns the pairs sorted (by a, then b), the order the 2D finder returns too.
+TEST_P(Pairs, EveryMethodReturnsPairsSorted) {
+  std::vector<test::BoxSet> sets = test::hardBoxSets();
+  sets.push_back({"random", test::randomBoxes(33, 4000, 60, 0.1f, 3)});
+  PairFinder finder;  // reused: its scratch memory must not leak between calls
+  for (const test::BoxSet& set : sets) {
+    const std::vector<Pair> want = test::bruteForcePairs(set.boxes);
+    for (PairMethod m : kMethods) {
+      std::vector<Pair> pairs;
+      finder.find(set.boxes, pairs, m);
+      EXPECT_EQ(pairs, want) << set.name << ", method " << int(m);
+    }
+  }
+}
+
+// The plain-loop baseline of the benchmarks (testing/pairs.hpp) finds the same pairs; it has no
+// BVH form.
+TEST_P(Pairs, PlainLoopBaselineEqualsBruteForce) {
+  if (referencePathActive()) GTEST_SKIP() << "the baseline is compiled per SIMD target";
+  test::PlainLoopPairFinder finder;
+  std::vector<Pair> pairs;
+  for (PairMethod m : {PairMethod::kGridSweep, PairMethod::kSweep}) {
+    const BoxStream boxes = test::randomBoxes(34, 3000, 50, 0.1f, 2);
+    finder.find(boxes, pairs, m);
+    EXPECT_EQ(pairs, test::bruteForcePairs(boxes)) << "method " << int(m);
+  }
+  EXPECT_THROW(finder.find(BoxStream(), pairs, PairMethod::kBvh), Error);
 }
 
 // W1 at N = 100,000: the exact reference figures of the workload specification.

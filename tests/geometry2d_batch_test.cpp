@@ -13,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "box_sets.hpp"
 #include "expect_error.hpp"
 #include "paths.hpp"
 #include "simdphys/geometry2d/batch.hpp"
@@ -20,6 +21,7 @@
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/point_tests.hpp"
 #include "testing/kernels.hpp"
+#include "testing/pairs.hpp"
 #include "workloads.hpp"
 
 namespace simdphys {
@@ -376,14 +378,7 @@ TEST(Streams2d, RejectBadElementsNamingThem) {
 
 // ---- broadphase ---------------------------------------------------------------------------------
 
-// Brute force over intersects(Rect, Rect), sorted by construction: the oracle.
-std::vector<Pair> bruteForcePairs(const RectStream& r) {
-  std::vector<Pair> pairs;
-  for (std::uint32_t i = 0; i < r.size(); ++i)
-    for (std::uint32_t j = i + 1; j < r.size(); ++j)
-      if (intersects(r[i], r[j])) pairs.push_back({i, j});
-  return pairs;
-}
+using test::bruteForcePairs;  // over intersects(Rect, Rect): the oracle (box_sets.hpp)
 
 struct RectSet {
   std::string name;
@@ -458,13 +453,13 @@ TEST_P(Broadphase2d, EveryMethodEqualsBruteForce) {
 
 TEST_P(Broadphase2d, PlainLoopBaselinesEqualBruteForce) {
   if (referencePathActive()) GTEST_SKIP() << "the baselines are compiled per SIMD target";
-  PairFinder2d finder;
+  test::PlainLoopPairFinder2d finder;
   std::vector<Pair> pairs;
   for (const RectSet& set : rectSets()) {
     const std::vector<Pair> want = bruteForcePairs(set.rects);
     for (PairMethod2d method :
          {PairMethod2d::kBandedSweep, PairMethod2d::kSweep, PairMethod2d::kBrute}) {
-      detail::findPairs2dAutovec(finder, set.rects, pairs, method);
+      finder.find(set.rects, pairs, method);
       EXPECT_EQ(pairs, want) << set.name << ", method " << int(method);
     }
   }

@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "expect_error.hpp"
-#include "scenes/workloads.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "typed.hpp"
+#include "workloads/workloads.hpp"
 
 namespace simdphys::test {
 

@@ -135,15 +135,16 @@ TEST_P(Picking, ReturnsTheModelUnderThePixel) {
     // Each model's centre projects to a pixel; nothing nearer covers it there.
     const struct {
       Vec3f point;
-      std::uint32_t model;
+      Handle model;
     } cases[] = {{{0, 0, 0}, ball}, {{3, 0, 0}, crate}, {{3, 2, 0}, child}, {{-6, -3, 2}, ground}};
     for (const auto& c : cases) {
       const Vec2f px = toPixel(cam, c.point);
-      EXPECT_EQ(scene.pick(cam, px.x(), px.y()).model, c.model) << "at " << c.point.transpose();
+      EXPECT_EQ(scene.pick(cam, px.x(), px.y()).model, scene.index(c.model))
+          << "at " << c.point.transpose();
     }
     // The hidden ball is behind the first on every pixel it covers: never picked.
     const Vec2f px = toPixel(cam, {0, 0, -6});
-    EXPECT_EQ(scene.pick(cam, px.x(), px.y()).model, ball);
+    EXPECT_EQ(scene.pick(cam, px.x(), px.y()).model, scene.index(ball));
     // The top-left corner sees the sky.
     EXPECT_FALSE(scene.pick(cam, 0.5f, 0.5f).hit());
   }

@@ -176,8 +176,9 @@ TEST_P(SceneQueries, EveryIndexEqualsBruteForceBeforeAndAfterMoves) {
   check();
   // Move a third of the models, some far away; chain a few under moving parents.
   for (std::uint32_t i = 0; i < scene.size(); i += 3)
-    scene.setTransform(i, test::randomPlacement(rng, i % 2 ? 40.0f : 200.0f).matrix());
-  for (std::uint32_t i = 4; i < 40; i += 5) scene.setParent(i, i - 3);
+    scene.setTransform(scene.handle(i),
+                       test::randomPlacement(rng, i % 2 ? 40.0f : 200.0f).matrix());
+  for (std::uint32_t i = 4; i < 40; i += 5) scene.setParent(scene.handle(i), scene.handle(i - 3));
   scene.update();
   check();
 }
@@ -196,12 +197,12 @@ TEST(SceneMoves, ModelsAreFoundAtTheirNewPlace) {
   scene.setTransform(box, transform(Vec3f::Ones(), Mat3f::Identity(), Vec3f(20, 0, 0)));
   scene.update();
   const ModelHit hit = scene.raycast(down);
-  EXPECT_EQ(hit.model, box);
+  EXPECT_EQ(hit.model, scene.index(box));
   EXPECT_EQ(hit.t, 9.5f);  // the box's top face at y = 0.5: exact in float
   EXPECT_FALSE(scene.raycast({{0, 10, 0}, {0, -1, 0}}).hit());
   const Sphere around{{20, 0, 0}, 1};
   for (SceneIndex via : {SceneIndex::kFlat, SceneIndex::kOctree, SceneIndex::kBvh})
-    EXPECT_EQ(scene.query(around, via), std::vector<std::uint32_t>{box});
+    EXPECT_EQ(scene.query(around, via), std::vector<std::uint32_t>{scene.index(box)});
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ TEST(SceneModels, ParentsComposeTransforms) {
   // (10,2,0). The grandchild's (0,2,0) in the child's frame is scaled to (0,4,0), turned to
   // (-4,0,0), plus the child's origin: (6,2,0). Tolerance: the quarter turn's cosine is -4.4e-8,
   // not 0, so coordinates carry errors of 1e-6 at magnitude 10; 1e-5 covers it.
-  auto origin = [&](std::uint32_t m) { return transformPoint(scene.world(m), Vec3f::Zero()); };
+  auto origin = [&](Handle m) { return transformPoint(scene.world(m), Vec3f::Zero()); };
   EXPECT_LT((origin(child) - Vec3f(10, 2, 0)).norm(), 1e-5f);
   EXPECT_LT((origin(grandchild) - Vec3f(6, 2, 0)).norm(), 1e-5f);
   // Scale reaches the grandchild: its radius 0.5 is 1 in the world, so a ray down -y from
@@ -41,7 +41,7 @@ TEST(SceneModels, ParentsComposeTransforms) {
   // radius 2 at x = 10) span x in [8, 12] and are missed.
   const ModelHit hit = scene.raycast({{6, 10, 0}, {0, -1, 0}});
   ASSERT_TRUE(hit.hit());
-  EXPECT_EQ(hit.model, grandchild);
+  EXPECT_EQ(hit.model, scene.index(grandchild));
   EXPECT_NEAR(hit.t, 7.0f, 1e-5f);
   EXPECT_LT((hit.normal - Vec3f(0, 1, 0)).norm(), 1e-5f);
 }
@@ -76,7 +76,7 @@ TEST(SceneModels, BadInputNamesWhatAndWhere) {
   expectError([&] { scene.add({std::shared_ptr<const MeshBvh>()}); }, "mesh is null");
   expectError(
       [&] {
-        scene.add({Sphere{Vec3f::Zero(), 1}, Mat4f::Identity(), 3});
+        scene.add({Sphere{Vec3f::Zero(), 1}, Mat4f::Identity(), Handle{3, 1}});
       },
       "parent 3 is out of range");
   const auto a = scene.add({Sphere{Vec3f::Zero(), 1}});
@@ -85,8 +85,12 @@ TEST(SceneModels, BadInputNamesWhatAndWhere) {
   expectError([&] { scene.setParent(a, c); },
               "model 0 would be its own ancestor (0 -> 2 -> 1 -> 0)");
   expectError([&] { scene.setParent(a, a); }, "own ancestor");
-  expectError([&] { scene.setParent(a, 9); }, "model 9 is out of range");
-  expectError([&] { scene.setTransform(7, Mat4f::Identity()); }, "model 7 is out of range");
+  expectError([&] { scene.setParent(a, Handle{9, 1}); }, "model 9 is out of range");
+  expectError(
+      [&] {
+        scene.setTransform(Handle{7, 1}, Mat4f::Identity());
+      },
+      "model 7 is out of range");
   expectError([&] { scene.raycast({Vec3f::Zero(), Vec3f::UnitX()}); }, "call update() first");
   // A world matrix can leave the supported range though every local one is in it: named at
   // update (scale 1e10 twice gives 1e20 > kMaxCoordinate).
@@ -95,6 +99,98 @@ TEST(SceneModels, BadInputNamesWhatAndWhere) {
   const auto p = deep.add({Sphere{Vec3f::Zero(), 1}, huge});
   deep.add({Sphere{Vec3f::Zero(), 1}, huge, p});
   expectError([&] { deep.update(); }, "model 1 (world)");
+}
+
+// ---- handles and removal ---------------------------------------------------------------------
+
+Model sphereAt(float x, Handle parent = kNoParent) {
+  return {Sphere{Vec3f::Zero(), 1}, translation(x, 0, 0), parent};
+}
+
+TEST(SceneHandles, RemovalKeepsModelsDenseAndHandlesStable) {
+  Scene scene;
+  const Handle a = scene.add(sphereAt(0)), b = scene.add(sphereAt(10)), c = scene.add(sphereAt(20));
+  EXPECT_EQ(scene.index(a), 0u);
+  EXPECT_EQ(scene.index(c), 2u);
+  scene.remove(a);  // the last model, c, takes index 0
+  EXPECT_EQ(scene.size(), 2u);
+  EXPECT_FALSE(scene.contains(a));
+  EXPECT_TRUE(scene.contains(c));
+  EXPECT_EQ(scene.index(c), 0u);
+  EXPECT_EQ(scene.index(b), 1u);
+  EXPECT_EQ(scene.handle(0), c);
+  EXPECT_EQ(scene.handle(1), b);
+  scene.update();
+  EXPECT_EQ(transformPoint(scene.world(c), Vec3f::Zero()), Vec3f(20, 0, 0));
+  EXPECT_EQ(transformPoint(scene.world(0u), Vec3f::Zero()), Vec3f(20, 0, 0));
+  // A new model reuses the freed slot with the next generation: the old handle stays stale.
+  const Handle d = scene.add(sphereAt(30));
+  EXPECT_EQ(d.slot, a.slot);
+  EXPECT_EQ(d.generation, a.generation + 1);
+  EXPECT_EQ(scene.index(d), 2u);
+  EXPECT_FALSE(scene.contains(a));
+  expectError([&] { scene.setTransform(a, Mat4f::Identity()); },
+              "Scene::setTransform: the handle (slot 0, generation 1) is stale");
+  expectError([&] { scene.remove(a); },
+              "Scene::remove: the handle (slot 0, generation 1) is stale");
+  expectError([&] { scene.world(a); }, "Scene::world: the handle");
+  expectError([&] { scene.setParent(d, a); }, "Scene::setParent (parent): the handle");
+  expectError([&] { scene.add(sphereAt(0, a)); }, "Scene::add: model 3 (parent): the handle");
+  expectError([&] { scene.index(Handle{}); }, "Scene::index: model 4294967295 is out of range");
+  expectError([&] { scene.handle(3); }, "Scene::handle: model 3 is out of range (3 models)");
+  EXPECT_EQ(scene.size(), 3u);  // the rejected calls changed nothing
+  EXPECT_EQ(transformPoint(scene.model(d).transform, Vec3f::Zero()), Vec3f(30, 0, 0));
+}
+
+// After removals the structures are rebuilt: every query answers for the models left, by their
+// new indices, whichever index answers it.
+TEST(SceneHandles, QueriesAfterRemoval) {
+  Scene scene;
+  std::vector<Handle> handles;
+  for (int i = 0; i < 12; ++i) handles.push_back(scene.add(sphereAt(10.0f * float(i))));
+  scene.update();
+  scene.remove(handles[3]);  // the model at x = 30; the one at x = 110 takes index 3
+  scene.remove(handles[0]);  // x = 0; x = 100 takes index 0
+  expectError([&] { scene.raycast({Vec3f::Zero(), Vec3f::UnitX()}); }, "call update() first");
+  scene.update();
+  ASSERT_EQ(scene.size(), 10u);
+  EXPECT_EQ(scene.bounds().size(), 10u);
+  for (SceneIndex via : {SceneIndex::kFlat, SceneIndex::kOctree, SceneIndex::kBvh}) {
+    SCOPED_TRACE("index " + std::to_string(int(via)));
+    EXPECT_TRUE(scene.query(Aabb{{29, -1, -1}, {31, 1, 1}}, via).empty());  // removed
+    EXPECT_TRUE(scene.query(Sphere{{0, 0, 0}, 0.5f}, via).empty());         // removed
+    EXPECT_EQ(scene.query(Aabb{{109, -1, -1}, {111, 1, 1}}, via),
+              std::vector<std::uint32_t>{scene.index(handles[11])});
+    EXPECT_EQ(scene.query(Aabb{{-1, -1, -1}, {121, 1, 1}}, via).size(), 10u);
+  }
+  // A ray along x from x = -5 hits the nearest model left, at x = 10.
+  const ModelHit hit = scene.raycast({{-5, 0, 0}, Vec3f::UnitX()});
+  ASSERT_TRUE(hit.hit());
+  EXPECT_EQ(scene.handle(hit.model), handles[1]);
+  EXPECT_NEAR(hit.t, 14.0f, 1e-5f);  // the sphere's surface at x = 9
+  // Removing every model leaves an empty scene that answers nothing.
+  for (const Handle h : handles)
+    if (scene.contains(h)) scene.remove(h);
+  scene.update();
+  EXPECT_EQ(scene.size(), 0u);
+  EXPECT_FALSE(scene.raycast({{-5, 0, 0}, Vec3f::UnitX()}).hit());
+}
+
+TEST(SceneHandles, ParentsFollowTheirModelsAndCannotBeRemovedFirst) {
+  Scene scene;
+  const Handle a = scene.add(sphereAt(0)), p = scene.add(sphereAt(100));
+  const Handle c = scene.add({Sphere{Vec3f::Zero(), 1}, translation(0, 5, 0), p});
+  expectError([&] { scene.remove(p); },
+              "Scene::remove: model 1 is the parent of model 2; remove or re-parent its children");
+  EXPECT_EQ(scene.size(), 3u);
+  scene.remove(a);  // c moves to index 0; its parent p stays at 1
+  EXPECT_EQ(scene.index(c), 0u);
+  scene.update();
+  EXPECT_EQ(transformPoint(scene.world(c), Vec3f::Zero()), Vec3f(100, 5, 0));
+  scene.setParent(c, kNoParent);
+  scene.remove(p);
+  scene.update();
+  EXPECT_EQ(transformPoint(scene.world(c), Vec3f::Zero()), Vec3f(0, 5, 0));
 }
 
 // ---- raycasts --------------------------------------------------------------------------------

@@ -2,11 +2,11 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
 #include "simdphys/geometry3d.hpp"
+#include "simdphys/pair_finder.hpp"
 
 namespace simdphys {
 
@@ -21,32 +21,8 @@ enum class PairMethod {
   kBvh,
 };
 
-// Finds all overlapping pairs (closed test) among boxes, each once as (a, b) with a < b. The
-// order is deterministic: it depends only on the input and the method, not on the path or the
-// number of threads (grid row by row, cell by cell, and within a cell in sweep order). Cells are
-// swept in parallel with OpenMP. Keeps its working memory from call to call, as a world's
-// broadphase does from step to step.
-class PairFinder;
-namespace detail {
-void findPairsAutovec(PairFinder&, const BoxStream&, std::vector<Pair>&);  // benchmark baseline
-}
-
-class PairFinder {
- public:
-  PairFinder();
-  ~PairFinder();
-  PairFinder(PairFinder&&) noexcept;
-  PairFinder& operator=(PairFinder&&) noexcept;
-
-  // Replaces `pairs` with the overlapping pairs of `boxes`. Runs on the active path.
-  void find(const BoxStream& boxes, std::vector<Pair>& pairs,
-            PairMethod method = PairMethod::kGridSweep);
-
- private:
-  friend void detail::findPairsAutovec(PairFinder&, const BoxStream&, std::vector<Pair>&);
-  struct Scratch;
-  std::unique_ptr<Scratch> scratch_;
-};
+// The 3D pair finder (pair_finder.hpp). Cells are swept in parallel with OpenMP.
+using PairFinder = PairFinderOf<BoxStream, PairMethod>;
 
 // One-off form of PairFinder::find.
 void findPairs(const BoxStream& boxes, std::vector<Pair>& pairs,

@@ -7,15 +7,11 @@
 
 #include "../core/radix_sort.hpp"
 #include "../views.hpp"
-#include "pairs.hpp"
+#include "pair_finder.hpp"
 #include "simdphys/broadphase.hpp"
 #include "simdphys/bvh.hpp"
 
 namespace simdphys {
-namespace reference {
-#include "sweep-inl.hpp"
-}  // namespace reference
-
 namespace {
 
 // Boxes per grid cell the grid aims at: few enough that the sweep's candidate lists along x stay
@@ -103,12 +99,14 @@ struct CellBuffer {
   }
 };
 
+// Each box's partners after it, ascending.
 void bvhPairs(const BoxStream& b, std::vector<Pair>& pairs) {
   Bvh tree(b);
   std::vector<std::uint32_t> hits;
   for (std::uint32_t i = 0; i < b.size(); ++i) {
     hits.clear();
     tree.query(b[i], hits);
+    std::sort(hits.begin(), hits.end());
     for (std::uint32_t j : hits)
       if (j > i) pairs.push_back({i, j});
   }
@@ -116,76 +114,71 @@ void bvhPairs(const BoxStream& b, std::vector<Pair>& pairs) {
 
 }  // namespace
 
+template <>
 struct PairFinder::Scratch {
   std::vector<std::int16_t> y0, y1, z0, z1;  // the cells each box covers
   std::vector<std::uint32_t> begin, cursor;  // per cell, into entries
   std::vector<Entry> entries;                // cell by cell, each in id order
   std::vector<CellBuffer> buffers;           // one per thread
-  std::vector<std::vector<Pair>> rowPairs;   // one per grid row, joined in row order
+  std::vector<std::vector<Pair>> rowPairs;   // one per grid row, sorted together
+  PairSorter sorter;
 
   template <class Sweep>
-  void run(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method, Sweep sweep);
+  void run(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method, Sweep sweep) {
+    const Grid g = chooseGrid(b, method);
+    const std::size_t n = b.size(), cells = std::size_t(g.ny) * g.nz;
+    y0.resize(n), y1.resize(n), z0.resize(n), z1.resize(n);
+    begin.assign(cells + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      y0[i] = std::int16_t(g.cellY(b.minY()[i])), y1[i] = std::int16_t(g.cellY(b.maxY()[i]));
+      z0[i] = std::int16_t(g.cellZ(b.minZ()[i])), z1[i] = std::int16_t(g.cellZ(b.maxZ()[i]));
+      for (int cy = y0[i]; cy <= y1[i]; ++cy)
+        for (int cz = z0[i]; cz <= z1[i]; ++cz) ++begin[std::size_t(cy) * g.nz + cz + 1];
+    }
+    for (std::size_t c = 0; c < cells; ++c) begin[c + 1] += begin[c];
+    entries.resize(begin[cells]);
+    cursor.assign(begin.begin(), begin.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      Entry e{b.minX()[i], b.maxX()[i], b.minY()[i], b.maxY()[i], b.minZ()[i],
+              b.maxZ()[i], i,           y0[i],       z0[i]};
+      for (int cy = y0[i]; cy <= y1[i]; ++cy)
+        for (int cz = z0[i]; cz <= z1[i]; ++cz) entries[cursor[std::size_t(cy) * g.nz + cz]++] = e;
+    }
+    // Rows are independent; each fills its own list.
+    rowPairs.resize(g.ny);
+    buffers.resize(std::size_t(omp_get_max_threads()));
+#pragma omp parallel for schedule(dynamic)
+    for (int cy = 0; cy < g.ny; ++cy) {
+      CellBuffer& buffer = buffers[std::size_t(omp_get_thread_num())];
+      rowPairs[cy].clear();
+      for (int cz = 0; cz < g.nz; ++cz) {
+        std::size_t c = std::size_t(cy) * g.nz + cz;
+        sweep(buffer.load(entries.data() + begin[c], begin[c + 1] - begin[c], cy, cz),
+              rowPairs[cy]);
+      }
+    }
+    sorter.sort({rowPairs.data(), std::size_t(g.ny)}, n, pairs);
+  }
 };
 
-template <class Sweep>
-void PairFinder::Scratch::run(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method,
-                              Sweep sweep) {
-  const Grid g = chooseGrid(b, method);
-  const std::size_t n = b.size(), cells = std::size_t(g.ny) * g.nz;
-  y0.resize(n), y1.resize(n), z0.resize(n), z1.resize(n);
-  begin.assign(cells + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    y0[i] = std::int16_t(g.cellY(b.minY()[i])), y1[i] = std::int16_t(g.cellY(b.maxY()[i]));
-    z0[i] = std::int16_t(g.cellZ(b.minZ()[i])), z1[i] = std::int16_t(g.cellZ(b.maxZ()[i]));
-    for (int cy = y0[i]; cy <= y1[i]; ++cy)
-      for (int cz = z0[i]; cz <= z1[i]; ++cz) ++begin[std::size_t(cy) * g.nz + cz + 1];
-  }
-  for (std::size_t c = 0; c < cells; ++c) begin[c + 1] += begin[c];
-  entries.resize(begin[cells]);
-  cursor.assign(begin.begin(), begin.end() - 1);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    Entry e{b.minX()[i], b.maxX()[i], b.minY()[i], b.maxY()[i], b.minZ()[i],
-            b.maxZ()[i], i,           y0[i],       z0[i]};
-    for (int cy = y0[i]; cy <= y1[i]; ++cy)
-      for (int cz = z0[i]; cz <= z1[i]; ++cz) entries[cursor[std::size_t(cy) * g.nz + cz]++] = e;
-  }
-  // Rows are independent; each fills its own list, so the joined order is the same whatever
-  // the number of threads.
-  rowPairs.resize(g.ny);
-  buffers.resize(std::size_t(omp_get_max_threads()));
-#pragma omp parallel for schedule(dynamic)
-  for (int cy = 0; cy < g.ny; ++cy) {
-    CellBuffer& buffer = buffers[std::size_t(omp_get_thread_num())];
-    rowPairs[cy].clear();
-    for (int cz = 0; cz < g.nz; ++cz) {
-      std::size_t c = std::size_t(cy) * g.nz + cz;
-      sweep(buffer.load(entries.data() + begin[c], begin[c + 1] - begin[c], cy, cz), rowPairs[cy]);
-    }
-  }
-  pairs.clear();
-  for (const std::vector<Pair>& row : rowPairs) pairs.insert(pairs.end(), row.begin(), row.end());
-}
-
-PairFinder::PairFinder() : scratch_(std::make_unique<Scratch>()) {}
-PairFinder::~PairFinder() = default;
-PairFinder::PairFinder(PairFinder&&) noexcept = default;
-PairFinder& PairFinder::operator=(PairFinder&&) noexcept = default;
-
-void PairFinder::find(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method) {
+template <>
+void PairFinder::findWith(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method,
+                          Loop loop) {
   if (method == PairMethod::kBvh) {
+    if (loop == Loop::kAutovec) throw Error("PairFinder: the BVH method has no plain-loop form");
     pairs.clear();
     return bvhPairs(b, pairs);
   }
-  if (referencePathActive()) return scratch_->run(b, pairs, method, reference::sweepCellScalar);
+  if (loop == Loop::kAutovec) return scratch_->run(b, pairs, method, simd::sweepCellAutovec);
+  if (referencePathActive())
+    return scratch_->run(b, pairs, method, reference::sweepScalar<simd::SweepCell>);
   scratch_->run(b, pairs, method, simd::sweepCell);
 }
 
+template class PairFinderOf<BoxStream, PairMethod>;
+
 void findPairs(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method) {
   PairFinder().find(b, pairs, method);
-}
-
-void detail::findPairsAutovec(PairFinder& finder, const BoxStream& b, std::vector<Pair>& pairs) {
-  finder.scratch_->run(b, pairs, PairMethod::kGridSweep, simd::sweepCellAutovec);
 }
 
 std::uint64_t countOverlapsBrute(const BoxStream& boxes, std::span<const Aabb> queries) {

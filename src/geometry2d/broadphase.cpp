@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "../broadphase/pair_finder.hpp"
 #include "../core/radix_sort.hpp"
 #include "simdphys/geometry2d/collisions.hpp"
 #include "simdphys/geometry2d/quadtree.hpp"
@@ -13,10 +14,6 @@
 #include "src/views.hpp"
 
 namespace simdphys {
-namespace reference {
-#include "sweep-inl.hpp"
-}  // namespace reference
-
 namespace {
 
 // Rectangles per band the banded sweep aims at, and the least band height in mean rectangle
@@ -60,6 +57,7 @@ Bands chooseBands(const RectStream& r, bool banded) {
 
 }  // namespace
 
+template <>
 struct PairFinder2d::Scratch {
   RadixSorter sorter;
   // The bands one after the other, each sorted by minX and followed by kStreamPad sentinels that
@@ -68,8 +66,8 @@ struct PairFinder2d::Scratch {
   std::vector<std::uint32_t> id;
   std::vector<std::int32_t> loBand, hiBand, bandLo;
   std::vector<std::uint32_t> begin, cursor;  // per band, into the arrays above
-  std::vector<std::uint32_t> start;          // counting sort of pairs: the first slot of each `a`
-  std::vector<Pair> sorted;
+  std::vector<Pair> unsorted;                // the bands' pairs
+  PairSorter pairSorter;
 
   // Sorts all rectangles by minX once (ties in index order), then deals them out to their bands in
   // that order, so each band comes out sorted.
@@ -109,30 +107,13 @@ struct PairFinder2d::Scratch {
             std::int32_t(k)};
   }
 
-  // Sorts pairs ascending: a counting sort on a (a < n), then each run of equal a, which holds the
-  // few partners of one rectangle, by b.
-  void sortPairs(std::vector<Pair>& pairs, std::size_t n) {
-    start.assign(n + 1, 0);
-    for (const Pair& p : pairs) ++start[p.a + 1];
-    for (std::size_t a = 0; a < n; ++a) start[a + 1] += start[a];
-    sorted.resize(pairs.size());
-    for (const Pair& p : pairs) sorted[start[p.a]++] = p;
-    for (auto run = sorted.begin(); run != sorted.end();) {
-      const auto end =
-          std::find_if(run, sorted.end(), [&](const Pair& p) { return p.a != run->a; });
-      std::sort(run, end);
-      run = end;
-    }
-    pairs.swap(sorted);
-  }
-
   template <class Sweep>
   void sweep(const RectStream& r, std::vector<Pair>& pairs, bool banded, Sweep sweepKernel) {
-    pairs.clear();
+    unsorted.clear();
     const Bands b = chooseBands(r, banded);
     fillBands(r, b);
-    for (std::size_t k = 0; k < std::size_t(b.count); ++k) sweepKernel(band(k), pairs);
-    sortPairs(pairs, r.size());
+    for (std::size_t k = 0; k < std::size_t(b.count); ++k) sweepKernel(band(k), unsorted);
+    pairSorter.sort({&unsorted, 1}, r.size(), pairs);
   }
 };
 
@@ -162,11 +143,6 @@ void quadtreePairs(const RectStream& r, std::vector<Pair>& pairs) {
 
 }  // namespace
 
-PairFinder2d::PairFinder2d() : scratch_(std::make_unique<Scratch>()) {}
-PairFinder2d::~PairFinder2d() = default;
-PairFinder2d::PairFinder2d(PairFinder2d&&) noexcept = default;
-PairFinder2d& PairFinder2d::operator=(PairFinder2d&&) noexcept = default;
-
 namespace {
 // kAuto's choice for this many rectangles; other methods as asked.
 PairMethod2d resolved(PairMethod2d method, const RectStream& r) {
@@ -175,47 +151,41 @@ PairMethod2d resolved(PairMethod2d method, const RectStream& r) {
 }
 }  // namespace
 
-void PairFinder2d::find(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method) {
+template <>
+void PairFinder2d::findWith(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method,
+                            Loop loop) {
   const PairMethod2d m = resolved(method, r);
+  const simd::Loop kernelLoop = loop == Loop::kAutovec ? simd::Loop::kAutovec : simd::Loop::kSimd;
+  const bool reference = loop == Loop::kActivePath && referencePathActive();
   switch (m) {
     case PairMethod2d::kAuto:  // resolved above
       break;
     case PairMethod2d::kQuadtree:
+      if (loop == Loop::kAutovec)
+        throw Error("PairFinder2d: the quadtree method has no plain-loop form");
       return quadtreePairs(r, pairs);
     case PairMethod2d::kBrute:
-      if (referencePathActive()) return bruteReference(r, pairs);
+      if (reference) return bruteReference(r, pairs);
       pairs.clear();
-      return simd::bruteRects2d(view(r), pairs);
+      return simd::bruteRects2d(view(r), pairs, kernelLoop);
     case PairMethod2d::kBandedSweep:
     case PairMethod2d::kSweep: {
       const bool banded = m == PairMethod2d::kBandedSweep;
-      if (referencePathActive())
-        return scratch_->sweep(r, pairs, banded, reference::sweepRects2dScalar);
-      return scratch_->sweep(
-          r, pairs, banded,
-          [](const simd::SortedRects2d& s, std::vector<Pair>& out) { simd::sweepRects2d(s, out); });
+      if (reference)
+        return scratch_->sweep(r, pairs, banded, reference::sweepScalar<simd::SortedRects2d>);
+      return scratch_->sweep(r, pairs, banded,
+                             [kernelLoop](const simd::SortedRects2d& s, std::vector<Pair>& out) {
+                               simd::sweepRects2d(s, out, kernelLoop);
+                             });
     }
   }
   throw Error("PairFinder2d::find: unknown method " + std::to_string(int(method)));
 }
 
+template class PairFinderOf<RectStream, PairMethod2d>;
+
 void findPairs(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method) {
   PairFinder2d().find(r, pairs, method);
-}
-
-void detail::findPairs2dAutovec(PairFinder2d& finder, const RectStream& r, std::vector<Pair>& pairs,
-                                PairMethod2d method) {
-  method = resolved(method, r);
-  if (method == PairMethod2d::kBrute) {
-    pairs.clear();
-    return simd::bruteRects2d(view(r), pairs, simd::Loop::kAutovec);
-  }
-  if (method == PairMethod2d::kQuadtree)
-    throw Error("findPairs2dAutovec: the quadtree has no plain-loop form");
-  finder.scratch_->sweep(r, pairs, method == PairMethod2d::kBandedSweep,
-                         [](const simd::SortedRects2d& s, std::vector<Pair>& out) {
-                           simd::sweepRects2d(s, out, simd::Loop::kAutovec);
-                         });
 }
 
 }  // namespace simdphys

@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "simdphys/scene.hpp"
+#include "simdphys/scene/frustum.hpp"
 
 namespace simdphys::detail {
 

@@ -40,43 +40,100 @@ bool overlaps(const Aabb& a, const Aabb& b) {
 
 }  // namespace
 
-void Scene::requireIndex(std::uint32_t i, const char* where) const {
-  if (i >= models_.size())
-    throw Error(std::string(where) + ": " + modelName(i) + " is out of range (" +
-                std::to_string(models_.size()) + " models)");
+std::uint32_t Scene::require(Handle h, const char* where) const {
+  if (h.slot >= slots_.size())
+    throw Error(std::string(where) + ": model " + std::to_string(h.slot) + " is out of range (" +
+                std::to_string(slots_.size()) + " slots; handle " + toString(h) + ")");
+  const Slot& s = slots_[h.slot];
+  if (s.generation != h.generation)
+    throw Error(std::string(where) + ": the handle (" + toString(h) +
+                ") is stale: its model was removed (the slot is at generation " +
+                std::to_string(s.generation) + ")");
+  return s.index;
 }
 
 void Scene::requireUpToDate(const char* where) const {
   if (dirty_) throw Error(std::string(where) + ": the scene changed; call update() first");
 }
 
-std::uint32_t Scene::add(const Model& model) {
+std::uint32_t Scene::parentIndex(std::uint32_t i) const {
+  const Handle p = models_[i].parent;
+  return p == kNoParent ? kNoModel : slots_[p.slot].index;
+}
+
+bool Scene::contains(Handle h) const {
+  return h.slot < slots_.size() && slots_[h.slot].generation == h.generation;
+}
+
+std::uint32_t Scene::index(Handle h) const { return require(h, "Scene::index"); }
+
+Handle Scene::handle(std::uint32_t i) const {
+  if (i >= models_.size())
+    throw Error("Scene::handle: " + modelName(i) + " is out of range (" +
+                std::to_string(models_.size()) + " models)");
+  return {slotOf_[i], slots_[slotOf_[i]].generation};
+}
+
+Handle Scene::add(const Model& model) {
   const auto i = std::uint32_t(models_.size());
   const std::string where = "Scene::add: " + modelName(i);
   validateTransform(model.transform, where);
   validateShape(model.shape, where);
-  if (model.parent != kNoParent && model.parent >= i)
-    throw Error(where + ": parent " + std::to_string(model.parent) + " is out of range (" +
-                std::to_string(i) + " models before it)");
+  if (model.parent != kNoParent) {
+    if (model.parent.slot >= slots_.size())
+      throw Error(where + ": parent " + std::to_string(model.parent.slot) + " is out of range (" +
+                  std::to_string(i) + " models before it)");
+    require(model.parent, (where + " (parent)").c_str());
+  }
+  std::uint32_t slot;
+  if (freeSlots_.empty()) {
+    slot = std::uint32_t(slots_.size());
+    slots_.push_back({i, 1});
+  } else {
+    slot = freeSlots_.back();
+    freeSlots_.pop_back();
+    slots_[slot].index = i;
+  }
   models_.push_back(model);
+  slotOf_.push_back(slot);
   dirty_ = true;
-  return i;
+  return {slot, slots_[slot].generation};
 }
 
-void Scene::setTransform(std::uint32_t i, const Mat4f& local) {
-  requireIndex(i, "Scene::setTransform");
+void Scene::remove(Handle h) {
+  const std::uint32_t i = require(h, "Scene::remove");
+  for (std::uint32_t m = 0; m < models_.size(); ++m)
+    if (models_[m].parent == h)
+      throw Error("Scene::remove: " + modelName(i) + " is the parent of " + modelName(m) +
+                  "; remove or re-parent its children first");
+  const std::uint32_t last = std::uint32_t(models_.size() - 1);
+  models_[i] = std::move(models_[last]);
+  slotOf_[i] = slotOf_[last];
+  slots_[slotOf_[i]].index = i;
+  models_.pop_back();
+  slotOf_.pop_back();
+  Slot& freed = slots_[h.slot];
+  freed.index = kNoModel;
+  if (++freed.generation == 0) freed.generation = 1;  // 0 is never live
+  freeSlots_.push_back(h.slot);
+  indexed_ = kRebuild;
+  dirty_ = true;
+}
+
+void Scene::setTransform(Handle h, const Mat4f& local) {
+  const std::uint32_t i = require(h, "Scene::setTransform");
   validateTransform(local, "Scene::setTransform: " + modelName(i));
   models_[i].transform = local;
   dirty_ = true;
 }
 
-void Scene::setParent(std::uint32_t i, std::uint32_t parent) {
-  requireIndex(i, "Scene::setParent");
+void Scene::setParent(Handle h, Handle parent) {
+  const std::uint32_t i = require(h, "Scene::setParent");
   if (parent != kNoParent) {
-    requireIndex(parent, "Scene::setParent (parent)");
     // Walk up from the new parent: meeting the model means the link would close a cycle.
+    std::uint32_t p = require(parent, "Scene::setParent (parent)");
     std::string chain = std::to_string(i);
-    for (std::uint32_t p = parent; p != kNoParent; p = models_[p].parent) {
+    for (; p != kNoModel; p = parentIndex(p)) {
       chain += " -> " + std::to_string(p);
       if (p == i)
         throw Error("Scene::setParent: " + modelName(i) + " would be its own ancestor (" + chain +
@@ -95,11 +152,11 @@ void Scene::update() {
   std::vector<std::uint8_t> done(n, 0);
   std::vector<std::uint32_t> chain;
   for (std::uint32_t i = 0; i < n; ++i) {
-    for (std::uint32_t m = i; m != kNoParent && !done[m]; m = models_[m].parent) chain.push_back(m);
+    for (std::uint32_t m = i; m != kNoModel && !done[m]; m = parentIndex(m)) chain.push_back(m);
     for (; !chain.empty(); chain.pop_back()) {
       const std::uint32_t m = chain.back();
-      const std::uint32_t p = models_[m].parent;
-      world_[m] = p == kNoParent ? models_[m].transform : Mat4f(world_[p] * models_[m].transform);
+      const std::uint32_t p = parentIndex(m);
+      world_[m] = p == kNoModel ? models_[m].transform : Mat4f(world_[p] * models_[m].transform);
       validateTransform(world_[m], "Scene::update: " + modelName(m) + " (world)");
       inverse_[m] = affineInverse(world_[m]);
       done[m] = 1;

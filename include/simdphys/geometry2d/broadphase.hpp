@@ -3,11 +3,11 @@
 // candidate pairs are then narrowed by the scalar intersects() of collisions.hpp.
 #pragma once
 
-#include <memory>
 #include <vector>
 
 #include "simdphys/core.hpp"
 #include "simdphys/geometry2d/streams.hpp"
+#include "simdphys/pair_finder.hpp"
 
 namespace simdphys {
 
@@ -35,32 +35,8 @@ enum class PairMethod2d {
 // for 100 rectangles against 3.6 us for the banded sweep, and 7.4 us against 6.8 us for 300.
 inline constexpr std::size_t kBruteBelow = 200;
 
-class PairFinder2d;
-namespace detail {
-// Benchmark baseline: the sweeps or the brute force as plain loops left to the auto-vectoriser.
-void findPairs2dAutovec(PairFinder2d&, const RectStream&, std::vector<Pair>&, PairMethod2d);
-}  // namespace detail
-
-// Finds all overlapping pairs (closed test: touching rectangles overlap) among rectangles, each
-// once as (a, b) with a < b, sorted ascending (by a, then b): every method and every path returns
-// the same vector. Keeps its working memory from call to call, as a world's broadphase does from
-// step to step. Runs on the active path.
-class PairFinder2d {
- public:
-  PairFinder2d();
-  ~PairFinder2d();
-  PairFinder2d(PairFinder2d&&) noexcept;
-  PairFinder2d& operator=(PairFinder2d&&) noexcept;
-
-  void find(const RectStream& rects, std::vector<Pair>& pairs,
-            PairMethod2d method = PairMethod2d::kAuto);
-
- private:
-  friend void detail::findPairs2dAutovec(PairFinder2d&, const RectStream&, std::vector<Pair>&,
-                                         PairMethod2d);
-  struct Scratch;
-  std::unique_ptr<Scratch> scratch_;
-};
+// The 2D pair finder (pair_finder.hpp; touching rectangles overlap). Runs on the active path.
+using PairFinder2d = PairFinderOf<RectStream, PairMethod2d>;
 
 // One-off form of PairFinder2d::find.
 void findPairs(const RectStream& rects, std::vector<Pair>& pairs,

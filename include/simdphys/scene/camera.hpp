@@ -7,7 +7,7 @@
 
 #include "simdphys/math.hpp"
 #include "simdphys/mesh_bvh.hpp"
-#include "simdphys/scene.hpp"
+#include "simdphys/scene/frustum.hpp"
 
 namespace simdphys {
 

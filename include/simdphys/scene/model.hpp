@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/handle.hpp"
 #include "simdphys/mesh_bvh.hpp"
 
 namespace simdphys {
@@ -21,14 +22,15 @@ namespace simdphys {
 // What a model is made of, in model space. Meshes are shared: many models may instance one.
 using ModelShape = std::variant<std::shared_ptr<const MeshBvh>, Sphere, Aabb, Obb>;
 
-inline constexpr std::uint32_t kNoParent = ~0u;
+// No parent: the default handle, which names no model.
+inline constexpr Handle kNoParent{};
 inline constexpr std::uint32_t kNoModel = ~0u;
 
 struct Model {
   ModelShape shape;
   // Model space to the parent's space (to world space without a parent).
   Mat4f transform = Mat4f::Identity();
-  std::uint32_t parent = kNoParent;  // index of the parent model in its scene
+  Handle parent = kNoParent;  // the parent model in its scene (Scene::add's handle)
 };
 
 // Where a ray meets a model, in world space.

@@ -23,7 +23,7 @@
 
 #include "simdphys/core.hpp"
 #include "simdphys/geometry3d/streams.hpp"
-#include "simdphys/scene.hpp"
+#include "simdphys/scene/frustum.hpp"
 
 namespace simdphys {
 

@@ -28,28 +28,49 @@ class Scene {
  public:
   explicit Scene(const OctreeOptions& octree = {}) : octreeOptions_(octree) {}
 
-  // Adds a model and returns its index. Throws Error naming the model if its transform is not
-  // finite, affine and invertible, its shape is invalid (a null mesh, a negative radius, ...),
-  // or its parent is not an existing model.
-  std::uint32_t add(const Model& model);
+  // Models are kept dense, at indices 0 .. size() - 1 of the streams (bounds(), the results of
+  // queries, ModelHit::model); a model is named for as long as it lives by the handle add()
+  // returns (handle.hpp). A removal moves the last model into the hole, so indices change and
+  // handles do not. Every call that takes a handle throws Error, naming the call and the handle,
+  // if the handle's model was removed (even if its slot holds a newer model) or never existed.
+
+  // Adds a model at index size() and returns its handle. Throws Error naming the model if its
+  // transform is not finite, affine and invertible, its shape is invalid (a null mesh, a negative
+  // radius, ...), or its parent is not a model of the scene.
+  Handle add(const Model& model);
+  // Removes a model; the last model takes its index. Throws Error if the model is still a parent
+  // (remove or re-parent its children first). Queries need update() after it.
+  void remove(Handle model);
   // Sets a model's local transform (validated as for add).
-  void setTransform(std::uint32_t model, const Mat4f& local);
-  // Makes `parent` (kNoParent for none) the model's parent. Throws Error if either index is out
-  // of range or the link would close a cycle (the message lists it).
-  void setParent(std::uint32_t model, std::uint32_t parent);
+  void setTransform(Handle model, const Mat4f& local);
+  // Makes `parent` (kNoParent for none) the model's parent. Throws Error if the link would close
+  // a cycle (the message lists it, by index).
+  void setParent(Handle model, Handle parent);
 
   // Brings world matrices, world bounds, the octree and the BVH up to date: after models were
-  // added both are rebuilt; after moves the BVH is refitted and the moved models are taken out
-  // of the octree's leaves and put into their new ones. Throws Error naming the model if a world
-  // matrix (parent world * local) is not finite or singular. Queries need it after any change.
+  // added or removed both are rebuilt; after moves the BVH is refitted and the moved models are
+  // taken out of the octree's leaves and put into their new ones. Throws Error naming the model
+  // if a world matrix (parent world * local) is not finite or singular. Queries need it after any
+  // change.
   void update();
 
   std::size_t size() const { return models_.size(); }
+  // True while the handle's model is in the scene.
+  bool contains(Handle model) const;
+  // The index of a model in the streams, until the next removal.
+  std::uint32_t index(Handle model) const;
+  // The handle of the model at an index (Error if out of range).
+  Handle handle(std::uint32_t index) const;
+
+  // A model by handle, or by index (an element of a query's result, ModelHit::model).
+  const Model& model(Handle m) const { return models_[require(m, "Scene::model")]; }
   const Model& model(std::uint32_t i) const { return models_.at(i); }
+  const Mat4f& world(Handle m) const { return world_.at(require(m, "Scene::world")); }
   const Mat4f& world(std::uint32_t i) const { return world_.at(i); }
   const BoundsStream& bounds() const { return bounds_; }
   const Octree& octree() const { return octree_; }
-  // Model i in the world, for the single-model operations of model.hpp.
+  // A model in the world, for the single-model operations of model.hpp.
+  PlacedShape placed(Handle m) const { return placed(require(m, "Scene::placed")); }
   PlacedShape placed(std::uint32_t i) const {
     return {&models_[i].shape, &world_[i], &inverse_[i]};
   }
@@ -75,8 +96,19 @@ class Scene {
   ModelHit pick(const Camera& camera, float px, float py) const;
 
  private:
-  void requireIndex(std::uint32_t i, const char* where) const;
+  // The index of a handle's model; Error naming `where` if the handle names none.
+  std::uint32_t require(Handle model, const char* where) const;
   void requireUpToDate(const char* where) const;
+  // The index of model i's parent, or kNoModel.
+  std::uint32_t parentIndex(std::uint32_t i) const;
+
+  // A handle's slot: the index of its model and the generation of the handle that names it.
+  struct Slot {
+    std::uint32_t index, generation;
+  };
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> slotOf_;     // per model index
+  std::vector<std::uint32_t> freeSlots_;  // slots whose model was removed, for reuse
 
   OctreeOptions octreeOptions_;
   std::vector<Model> models_;
@@ -85,7 +117,8 @@ class Scene {
   BoxStream boxes_;  // bounds_ as min/max, the BVH's input
   Octree octree_;
   Bvh bvh_;
-  std::size_t indexed_ = 0;  // models in the octree and BVH
+  std::size_t indexed_ = 0;  // models in the octree and BVH; kRebuild after a removal
+  static constexpr std::size_t kRebuild = ~std::size_t(0);
   bool dirty_ = false;
 };
 
