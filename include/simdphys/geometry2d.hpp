@@ -4,7 +4,8 @@
 // shapes, and the quadtree.
 //
 // Conventions (each part's header states its own details):
-// - Scalar reference, header-only templates on float (the API) and double (the reference).
+// - Scalar reference, templates on float (the API) and double (the reference), declared in the
+//   headers and compiled once for both in src/reference/geometry2d/.
 // - x right, y up, angles in radians counter-clockwise; shapes closed and solid, touching counts.
 // - Zero sizes are valid (points); queries never divide by zero and have documented answers.
 // - Rounding is absorbed by kGeometry2dTolerance (16 eps) times a per-function scale; the
