@@ -8,17 +8,22 @@
 
 #include "simdphys/broadphase.hpp"
 #include "simdphys/geometry2d/broadphase.hpp"
+#include "src/core/on_path.hpp"
 
 namespace simdphys::test {
 
-// A PairFinderOf whose find() runs the plain loops. Throws Error for a method without one (the
+// A pair finder whose find() runs the plain loops. Throws Error for a method without one (the
 // 3D BVH, the 2D quadtree).
 template <class Finder>
 class PlainLoop : public Finder {
  public:
   template <class Stream, class Method>
   void find(const Stream& stream, std::vector<Pair>& pairs, Method method) {
-    this->findWith(stream, pairs, method, Finder::Loop::kAutovec);
+    struct Scoped {
+      Scoped() { detail::setPlainLoops(true); }
+      ~Scoped() { detail::setPlainLoops(false); }
+    } plain;
+    Finder::find(stream, pairs, method);
   }
 };
 

@@ -97,7 +97,9 @@ void randomMoves(Method method, Stream stream, Move move) {
     const std::vector<Pair> now = bruteForcePairs(stream);
     const PairEvents want = expectedEvents(before, now);
     ASSERT_FALSE(want.began.empty());  // the moves exercise every event
-    if (step > 0) ASSERT_FALSE(want.ended.empty() || want.persisted.empty());
+    if (step > 0) {
+      ASSERT_FALSE(want.ended.empty() || want.persisted.empty());
+    }
     const PairEvents& got = finder.update(stream, method);
     EXPECT_EQ(got.began, want.began);
     EXPECT_EQ(got.persisted, want.persisted);

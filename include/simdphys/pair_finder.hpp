@@ -35,13 +35,13 @@ class PairFinderOf {
 
   // Replaces `pairs` with the overlapping pairs of `stream`. Runs on the active path.
   void find(const Stream& stream, std::vector<Pair>& pairs, Method method = Method{}) {
-    findWith(stream, pairs, method, Loop::kActivePath);
+    findWith(stream, pairs, method);
   }
   // Finds the pairs as find() does, keeps them as pairs(), and returns how they changed since the
   // previous update (on the first, or after reset(), every pair began). If it throws, nothing
   // has changed.
   const PairEvents& update(const Stream& stream, Method method = Method{}) {
-    findWith(stream, found_, method, Loop::kActivePath);
+    findWith(stream, found_, method);
     return advance();
   }
   // The pairs of the last update (began and persisted together), sorted.
@@ -55,14 +55,8 @@ class PairFinderOf {
     events_ = {};
   }
 
- protected:
-  // How the kernels run: on the active path, or on the best SIMD target as the plain loops left
-  // to the auto-vectoriser (the benchmarks' second baseline, testing/pairs.hpp; Error for a method
-  // that has no such form).
-  enum class Loop { kActivePath, kAutovec };
-  void findWith(const Stream& stream, std::vector<Pair>& pairs, Method method, Loop loop);
-
  private:
+  void findWith(const Stream& stream, std::vector<Pair>& pairs, Method method);
   // Makes found_ (sorted) the current pairs and the events its difference from the previous ones.
   const PairEvents& advance();
 

@@ -12,6 +12,7 @@
 
 #include "simd/kernels.hpp"
 #include "simdphys/pair_finder.hpp"
+#include "src/core/on_path.hpp"
 
 namespace simdphys {
 

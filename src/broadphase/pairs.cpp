@@ -162,14 +162,14 @@ struct PairFinder::Scratch {
 };
 
 template <>
-void PairFinder::findWith(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method,
-                          Loop loop) {
+void PairFinder::findWith(const BoxStream& b, std::vector<Pair>& pairs, PairMethod method) {
+  const bool plain = detail::plainLoopsActive();
   if (method == PairMethod::kBvh) {
-    if (loop == Loop::kAutovec) throw Error("PairFinder: the BVH method has no plain-loop form");
+    if (plain) throw Error("PairFinder: the BVH method has no plain-loop form");
     pairs.clear();
     return bvhPairs(b, pairs);
   }
-  if (loop == Loop::kAutovec) return scratch_->run(b, pairs, method, simd::sweepCellAutovec);
+  if (plain) return scratch_->run(b, pairs, method, simd::sweepCellAutovec);
   if (referencePathActive())
     return scratch_->run(b, pairs, method, reference::sweepScalar<simd::SweepCell>);
   scratch_->run(b, pairs, method, simd::sweepCell);

@@ -27,4 +27,12 @@ std::size_t selectOnPath(const core::View<Fields>& v, std::vector<std::uint32_t>
   return out.size();
 }
 
+namespace detail {
+// While set (testing/pairs.hpp, for the tests and the benchmarks' second baseline), the pair
+// finders run their kernels as the plain loops left to the auto-vectoriser, on the best SIMD
+// target, whatever the active path. Not thread-safe, as setPath() is not.
+bool plainLoopsActive();
+void setPlainLoops(bool on);
+}  // namespace detail
+
 }  // namespace simdphys

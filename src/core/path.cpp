@@ -3,6 +3,7 @@
 
 #include "../../simd/kernels.hpp"
 #include "simdphys/core.hpp"
+#include "src/core/on_path.hpp"
 
 namespace simdphys {
 namespace {
@@ -75,5 +76,12 @@ void setPath(std::string_view name) {
   activate(s, name);
   s.error.clear();
 }
+
+namespace {
+bool plainLoops = false;
+}  // namespace
+
+bool detail::plainLoopsActive() { return plainLoops; }
+void detail::setPlainLoops(bool on) { plainLoops = on; }
 
 }  // namespace simdphys

@@ -152,17 +152,16 @@ PairMethod2d resolved(PairMethod2d method, const RectStream& r) {
 }  // namespace
 
 template <>
-void PairFinder2d::findWith(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method,
-                            Loop loop) {
+void PairFinder2d::findWith(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method) {
   const PairMethod2d m = resolved(method, r);
-  const simd::Loop kernelLoop = loop == Loop::kAutovec ? simd::Loop::kAutovec : simd::Loop::kSimd;
-  const bool reference = loop == Loop::kActivePath && referencePathActive();
+  const bool plain = detail::plainLoopsActive();
+  const simd::Loop kernelLoop = plain ? simd::Loop::kAutovec : simd::Loop::kSimd;
+  const bool reference = !plain && referencePathActive();
   switch (m) {
     case PairMethod2d::kAuto:  // resolved above
       break;
     case PairMethod2d::kQuadtree:
-      if (loop == Loop::kAutovec)
-        throw Error("PairFinder2d: the quadtree method has no plain-loop form");
+      if (plain) throw Error("PairFinder2d: the quadtree method has no plain-loop form");
       return quadtreePairs(r, pairs);
     case PairMethod2d::kBrute:
       if (reference) return bruteReference(r, pairs);
