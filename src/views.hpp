@@ -6,7 +6,7 @@
 #include "simdphys/geometry2d/primitives.hpp"
 #include "simdphys/geometry2d/streams.hpp"
 #include "simdphys/geometry3d.hpp"
-#include "simdphys/scene.hpp"
+#include "simdphys/scene/frustum.hpp"
 
 namespace simdphys {
 
