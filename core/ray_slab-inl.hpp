@@ -23,16 +23,20 @@ inline void clipSlab(V tNear, V tFar, V& enter, V& exit) {
 
 // The walks' test: the lanes whose ray enters their box before `bound` (and after 0), and
 // `enter`, the scaled distance where it does (traversal_ray.hpp: scaled so that a box the ray
-// touches in exact arithmetic is never culled). Per axis: the box's near and far face (chosen by
-// the sign bit of the direction), the ray's origin and inverse direction.
-template <bool kFinite, class D, class V>
-inline auto raySlab(D d, const V (&nearFace)[3], const V (&farFace)[3], const V (&origin)[3],
-                    const V (&inverse)[3], V bound, V& enter) {
+// touches in exact arithmetic is never culled). `faces(a, nearFace, farFace)` gives axis a's near
+// and far face (chosen by the sign bit of the direction), axis by axis so that the lanes' loads
+// or selects interleave with the arithmetic; origin and inverse are the ray's, per axis.
+template <bool kFinite, class D, class V, class Faces>
+inline auto raySlab(D d, Faces faces, const V (&origin)[3], const V (&inverse)[3], V bound,
+                    V& enter) {
   enter = Zero(d);
   V exit = bound;
-  for (int a = 0; a < 3; ++a)
-    clipSlab<kFinite>(Mul(Sub(nearFace[a], origin[a]), inverse[a]),
-                      Mul(Sub(farFace[a], origin[a]), inverse[a]), enter, exit);
+  for (int a = 0; a < 3; ++a) {
+    V nearFace, farFace;
+    faces(a, nearFace, farFace);
+    clipSlab<kFinite>(Mul(Sub(nearFace, origin[a]), inverse[a]),
+                      Mul(Sub(farFace, origin[a]), inverse[a]), enter, exit);
+  }
   enter = Mul(enter, Set(d, ::simdphys::detail::kEnterScale));
   return Le(enter, Mul(exit, Set(d, ::simdphys::detail::kExitScale)));
 }

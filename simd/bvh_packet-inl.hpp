@@ -66,25 +66,29 @@ class RayPacket {
     using Entry = RayPacket::Entry;
     explicit Walk(RayPacket& p) : p_(p) {}
     static std::uint32_t ref(const Entry& e) { return e.ref; }
-    // No active lane; or few, which then walk the subtree alone.
+    // No active lane; or few, which then walk the subtree alone. The entry's distances are
+    // copied to an aligned buffer first: every test below loads them, and in the entry they
+    // straddle cache lines (packets ran 5% slower reading them there).
     bool skip(const Entry& e) {
-      const std::uint32_t active = p_.activeLanes(e.dist);
+      std::copy_n(e.dist, N, dist_);
+      const std::uint32_t active = p_.activeLanes(dist_);
       if (__builtin_popcount(active) > kSwitchThreshold) return false;
       for (std::uint32_t m = active; m != 0; m &= m - 1) p_.single(__builtin_ctz(m), e.ref);
       return true;
     }
     bool leaf(const Entry& e) {
-      p_.leaf(e.ref, e.dist);
+      p_.leaf(e.ref, dist_);
       return false;
     }
     // Children are pushed, not visited at once: each popped entry takes the hybrid switch.
-    bool expand(const BvhNode& n, Entry& e, Entry* stack, int& top) {
-      top = p_.template expand<kFinite>(n, e.dist, stack, top);
+    bool expand(const BvhNode& n, Entry&, Entry* stack, int& top) {
+      top = p_.template expand<kFinite>(n, dist_, stack, top);
       return false;
     }
 
    private:
     RayPacket& p_;
+    alignas(64) float dist_[N];  // the popped entry's
   };
 
  private:
@@ -141,18 +145,18 @@ class RayPacket {
       for (std::size_t h = 0; h < N; h += kLanes) {
         const auto bound = hn::Load(d, bound_ + h);
         const auto active = hn::Le(hn::LoadU(d, dist + h), bound);
-        hn::Vec<D> nearFace[3], farFace[3], origin[3], inverse[3], enter;
-        for (int a = 0; a < 3; ++a) {
+        hn::Vec<D> origin[3], inverse[3], enter;
+        for (int a = 0; a < 3; ++a)
           origin[a] = hn::Load(d, origin_[a] + h), inverse[a] = hn::Load(d, inverse_[a] + h);
-          // The near face by the sign bit of the direction (that of its inverse, -0 giving
-          // -inf), per lane, as RayCore picks it per ray.
+        // The near face by the sign bit of the direction (that of its inverse, -0 giving -inf),
+        // per lane, as RayCore picks it per ray.
+        auto faces = [&](int a, hn::Vec<D>& nearFace, hn::Vec<D>& farFace) {
           const auto negative = hn::Lt(inverse[a], zero);
           const auto boxLo = hn::Set(d, lo[a][k]), boxHi = hn::Set(d, hi[a][k]);
-          nearFace[a] = hn::IfThenElse(negative, boxHi, boxLo);
-          farFace[a] = hn::IfThenElse(negative, boxLo, boxHi);
-        }
-        const auto hit =
-            hn::And(active, raySlab<kFinite>(d, nearFace, farFace, origin, inverse, bound, enter));
+          nearFace = hn::IfThenElse(negative, boxHi, boxLo);
+          farFace = hn::IfThenElse(negative, boxLo, boxHi);
+        };
+        const auto hit = hn::And(active, raySlab<kFinite>(d, faces, origin, inverse, bound, enter));
         const auto kept = hn::IfThenElse(hit, enter, inf);
         hn::StoreU(kept, d, kid.dist + h);
         if (hn::AllFalse(d, hit)) continue;

@@ -65,15 +65,14 @@ class RayCore {
     const float* rows = n.minX;
     int count = 0;
     for (std::size_t h = 0; h < BvhNode::kWidth; h += hn::Lanes(d)) {
-      hn::Vec<D> nearFace[3], farFace[3], origin[3], inverse[3], enter;
-      for (int a = 0; a < 3; ++a) {
-        nearFace[a] = hn::Load(d, rows + near_[a] + h);
-        farFace[a] = hn::Load(d, rows + far_[a] + h);
-        origin[a] = hn::Set(d, ray_.origin[a]);
-        inverse[a] = hn::Set(d, ray_.inverse[a]);
-      }
-      const auto hit =
-          raySlab<kFinite>(d, nearFace, farFace, origin, inverse, hn::Set(d, bound), enter);
+      hn::Vec<D> origin[3], inverse[3], enter;
+      for (int a = 0; a < 3; ++a)
+        origin[a] = hn::Set(d, ray_.origin[a]), inverse[a] = hn::Set(d, ray_.inverse[a]);
+      auto faces = [&](int a, hn::Vec<D>& nearFace, hn::Vec<D>& farFace) {
+        nearFace = hn::Load(d, rows + near_[a] + h);
+        farFace = hn::Load(d, rows + far_[a] + h);
+      };
+      const auto hit = raySlab<kFinite>(d, faces, origin, inverse, hn::Set(d, bound), enter);
       if (hn::AllFalse(d, hit)) continue;
       const auto child = hn::Load(du, n.child + h);
       const int kept = int(compressStore32(du, child, hn::RebindMask(du, hit), refs + count));

@@ -65,15 +65,15 @@ inline int expandRay(const BvhNode& n, const detail::TraversalRay& ray, float bo
   int count = 0;
   for (int k = 0; k < BvhNode::kWidth; ++k) {
     if (n.child[k] == BvhNode::kEmpty) continue;
-    float nearFace[3], farFace[3], enter;
-    for (int a = 0; a < 3; ++a) {
-      nearFace[a] = ray.negative[a] ? hi[a][k] : lo[a][k];
-      farFace[a] = ray.negative[a] ? lo[a][k] : hi[a][k];
-    }
-    const bool hit = ray.finiteInverse ? raySlab<true>(ScalarLane{}, nearFace, farFace, ray.origin,
-                                                       ray.inverse, bound, enter)
-                                       : raySlab<false>(ScalarLane{}, nearFace, farFace, ray.origin,
-                                                        ray.inverse, bound, enter);
+    auto faces = [&](int a, float& nearFace, float& farFace) {
+      nearFace = ray.negative[a] ? hi[a][k] : lo[a][k];
+      farFace = ray.negative[a] ? lo[a][k] : hi[a][k];
+    };
+    float enter;
+    const bool hit =
+        ray.finiteInverse
+            ? raySlab<true>(ScalarLane{}, faces, ray.origin, ray.inverse, bound, enter)
+            : raySlab<false>(ScalarLane{}, faces, ray.origin, ray.inverse, bound, enter);
     if (!hit) continue;
     refs[count] = n.child[k];
     dists[count++] = enter;

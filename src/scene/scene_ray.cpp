@@ -89,15 +89,15 @@ struct RaySlabs {
   void enters(const Aabb& box, const float* limit, std::uint8_t* keep) const {
     const std::size_t n = origin[0].size();
     for (std::size_t i = 0; i < n; ++i) {
-      float o[3], inv[3], nearFace[3], farFace[3], enter;
-      for (int a = 0; a < 3; ++a) {
-        o[a] = origin[a][i], inv[a] = inverse[a][i];
-        // The near face by the direction's sign bit, that of its inverse (-0 gives -inf).
-        nearFace[a] = inv[a] < 0 ? box.max[a] : box.min[a];
-        farFace[a] = inv[a] < 0 ? box.min[a] : box.max[a];
-      }
-      keep[i] = reference::raySlab<kFinite>(reference::ScalarLane{}, nearFace, farFace, o, inv,
-                                            limit[i], enter);
+      float o[3], inv[3], enter;
+      for (int a = 0; a < 3; ++a) o[a] = origin[a][i], inv[a] = inverse[a][i];
+      // The near face by the direction's sign bit, that of its inverse (-0 gives -inf).
+      auto faces = [&](int a, float& nearFace, float& farFace) {
+        nearFace = inv[a] < 0 ? box.max[a] : box.min[a];
+        farFace = inv[a] < 0 ? box.min[a] : box.max[a];
+      };
+      keep[i] =
+          reference::raySlab<kFinite>(reference::ScalarLane{}, faces, o, inv, limit[i], enter);
     }
   }
 };
