@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -30,8 +31,9 @@ HWY_INLINE void forEachLane(D d, M mask, Emit emit) {
   for (; bits; bits &= bits - 1) emit(std::size_t(__builtin_ctzll(bits)));
 }
 
-void SweepRects2d(const SortedRects2d& c, std::vector<Pair>& out, Loop loop) {
-  if (loop == Loop::kAutovec) return sweepScalar(c, out);
+void SweepRects2dAutovec(const SortedRects2d& c, std::vector<Pair>& out) { sweepScalar(c, out); }
+
+void SweepRects2d(const SortedRects2d& c, std::vector<Pair>& out) {
   const hn::ScalableTag<float> d;
   const std::size_t lanes = hn::Lanes(d);
   for (std::size_t i = 0; i < c.count; ++i) {
@@ -52,17 +54,17 @@ void SweepRects2d(const SortedRects2d& c, std::vector<Pair>& out, Loop loop) {
 }
 
 // The closed overlap of rectangle i with rectangles j.. of the stream (intersects(Rect, Rect)).
-void BruteRects2d(const RectsView& v, std::vector<Pair>& out, Loop loop) {
-  if (loop == Loop::kAutovec) {
-    for (std::size_t i = 0; i < v.count; ++i)
-      for (std::size_t j = i + 1; j < v.count; ++j)
-        if (v[fields::Rect::minX][j] <= v[fields::Rect::maxX][i] &&
-            v[fields::Rect::minX][i] <= v[fields::Rect::maxX][j] &&
-            v[fields::Rect::minY][j] <= v[fields::Rect::maxY][i] &&
-            v[fields::Rect::minY][i] <= v[fields::Rect::maxY][j])
-          out.push_back({std::uint32_t(i), std::uint32_t(j)});
-    return;
-  }
+void BruteRects2dAutovec(const RectsView& v, std::vector<Pair>& out) {
+  for (std::size_t i = 0; i < v.count; ++i)
+    for (std::size_t j = i + 1; j < v.count; ++j)
+      if (v[fields::Rect::minX][j] <= v[fields::Rect::maxX][i] &&
+          v[fields::Rect::minX][i] <= v[fields::Rect::maxX][j] &&
+          v[fields::Rect::minY][j] <= v[fields::Rect::maxY][i] &&
+          v[fields::Rect::minY][i] <= v[fields::Rect::maxY][j])
+        out.push_back({std::uint32_t(i), std::uint32_t(j)});
+}
+
+void BruteRects2d(const RectsView& v, std::vector<Pair>& out) {
   const hn::ScalableTag<float> d;
   const hn::RebindToUnsigned<decltype(d)> du;
   const std::size_t lanes = hn::Lanes(d);
@@ -104,14 +106,9 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(SweepRects2d);
-HWY_EXPORT(BruteRects2d);
-
-void sweepRects2d(const SortedRects2d& rects, std::vector<Pair>& out, Loop loop) {
-  HWY_DYNAMIC_DISPATCH(SweepRects2d)(rects, out, loop);
-}
-void bruteRects2d(const RectsView& v, std::vector<Pair>& out, Loop loop) {
-  HWY_DYNAMIC_DISPATCH(BruteRects2d)(v, out, loop);
-}
+SIMDPHYS_EXPORT(SweepRects2d, sweepRects2d);
+SIMDPHYS_EXPORT(SweepRects2dAutovec, sweepRects2dAutovec);
+SIMDPHYS_EXPORT(BruteRects2d, bruteRects2d);
+SIMDPHYS_EXPORT(BruteRects2dAutovec, bruteRects2dAutovec);
 }  // namespace simdphys::simd
 #endif

@@ -11,6 +11,7 @@
 #include <limits>
 #include <utility>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -155,20 +156,8 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(BvhBin);
-HWY_EXPORT(BvhPartition);
-HWY_EXPORT(BvhBounds);
-
-void bvhBin(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame,
-            BvhBins& bins) {
-  HWY_DYNAMIC_DISPATCH(BvhBin)(prims, n, frame, bins);
-}
-void bvhPartition(detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame, int axis,
-                  int split, BvhSides& sides) {
-  HWY_DYNAMIC_DISPATCH(BvhPartition)(prims, n, frame, axis, split, sides);
-}
-void bvhBounds(const detail::BvhPrimRef* prims, std::size_t n, BvhBox& box, BvhBox& centroids) {
-  HWY_DYNAMIC_DISPATCH(BvhBounds)(prims, n, box, centroids);
-}
+SIMDPHYS_EXPORT(BvhBin, bvhBin);
+SIMDPHYS_EXPORT(BvhPartition, bvhPartition);
+SIMDPHYS_EXPORT(BvhBounds, bvhBounds);
 }  // namespace simdphys::simd
 #endif

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 #include "simdphys/bvh_types.hpp"
 
@@ -107,16 +108,7 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(BvhCountOverlaps);
-HWY_EXPORT(BvhQuery);
-
-std::uint64_t bvhCountOverlaps(const BvhNode* nodes, std::size_t nodeCount, const Box* queries,
-                               std::size_t nQueries) {
-  return HWY_DYNAMIC_DISPATCH(BvhCountOverlaps)(nodes, nodeCount, queries, nQueries);
-}
-void bvhQuery(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
-              std::vector<std::uint32_t>& out) {
-  HWY_DYNAMIC_DISPATCH(BvhQuery)(nodes, nodeCount, query, out);
-}
+SIMDPHYS_EXPORT(BvhCountOverlaps, bvhCountOverlaps);
+SIMDPHYS_EXPORT(BvhQuery, bvhQuery);
 }  // namespace simdphys::simd
 #endif

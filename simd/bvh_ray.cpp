@@ -16,6 +16,7 @@
 #include <limits>
 
 #include "core/traversal_ray.hpp"
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 #include "simdphys/bvh_types.hpp"
 
@@ -231,29 +232,10 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(MeshClosestHits);
-HWY_EXPORT(MeshAnyHits);
-HWY_EXPORT(MeshClosestHitPackets);
-HWY_EXPORT(MeshClosestHitsOf);
-HWY_EXPORT(MeshRayKeys);
-
-void meshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
-  HWY_DYNAMIC_DISPATCH(MeshClosestHits)(mesh, rays, id, t);
-}
-void meshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
-  HWY_DYNAMIC_DISPATCH(MeshAnyHits)(mesh, rays, hit);
-}
-void meshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                           std::size_t packets, int width, MeshHit* out) {
-  HWY_DYNAMIC_DISPATCH(MeshClosestHitPackets)(mesh, rays, index, packets, width, out);
-}
-void meshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                       std::size_t n, MeshHit* out) {
-  HWY_DYNAMIC_DISPATCH(MeshClosestHitsOf)(mesh, rays, index, n, out);
-}
-void meshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                 std::size_t n, std::uint32_t* key) {
-  HWY_DYNAMIC_DISPATCH(MeshRayKeys)(mesh, rays, index, n, key);
-}
+SIMDPHYS_EXPORT(MeshClosestHits, meshClosestHits);
+SIMDPHYS_EXPORT(MeshAnyHits, meshAnyHits);
+SIMDPHYS_EXPORT(MeshClosestHitPackets, meshClosestHitPackets);
+SIMDPHYS_EXPORT(MeshClosestHitsOf, meshClosestHitsOf);
+SIMDPHYS_EXPORT(MeshRayKeys, meshRayKeys);
 }  // namespace simdphys::simd
 #endif

@@ -104,10 +104,12 @@ extern const Kernel<std::uint64_t(const BoxesView&, const Box*, std::size_t)> co
 
 // Tree queries (bvh.hpp): the total number of (query, box) overlaps, and the ids overlapping one
 // query appended to `out`.
-std::uint64_t bvhCountOverlaps(const BvhNode* nodes, std::size_t nodeCount, const Box* queries,
-                               std::size_t nQueries);
-void bvhQuery(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
-              std::vector<std::uint32_t>& out);
+extern const Kernel<std::uint64_t(const BvhNode* nodes, std::size_t nodeCount, const Box* queries,
+                                  std::size_t nQueries)>
+    bvhCountOverlaps;
+extern const Kernel<void(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
+                         std::vector<std::uint32_t>& out)>
+    bvhQuery;
 
 // ---- BVH build (src/bvh/build.cpp) ------------------------------------------------------------
 // Binned SAH: the three kernels of the builder's passes over a range of primitives. Boxes are rows
@@ -131,14 +133,18 @@ struct BvhSides {
   BvhBox box[2], centroids[2];
   std::size_t left;
 };
-void bvhBin(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame,
-            BvhBins& bins);
+extern const Kernel<void(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame,
+                         BvhBins& bins)>
+    bvhBin;
 // Moves the primitives whose bin on `axis` is below `split` before the others (Hoare's scheme,
 // in place) and measures both sides on the way.
-void bvhPartition(detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame, int axis,
-                  int split, BvhSides& sides);
+extern const Kernel<void(detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& frame,
+                         int axis, int split, BvhSides& sides)>
+    bvhPartition;
 // The box and centroid box of the primitives.
-void bvhBounds(const detail::BvhPrimRef* prims, std::size_t n, BvhBox& box, BvhBox& centroids);
+extern const Kernel<void(const detail::BvhPrimRef* prims, std::size_t n, BvhBox& box,
+                         BvhBox& centroids)>
+    bvhBounds;
 
 // ---- W1: broadphase pairs -------------------------------------------------------------------
 // One cell of the sweep grid: its boxes sorted by minX, each with its id and the first grid row
@@ -153,8 +159,7 @@ struct SweepCell {
 // Appends the overlapping pairs of the cell that belong to it: a pair shared by several cells
 // belongs to the cell holding the low corner of the two boxes' intersection, so it is reported
 // once. Pairs are (smaller id, larger id), in sweep order.
-void sweepCell(const SweepCell& cell, std::vector<Pair>& out);
-void sweepCellAutovec(const SweepCell& cell, std::vector<Pair>& out);
+extern const Kernel<void(const SweepCell&cell, std::vector<Pair>&out)> sweepCell, sweepCellAutovec;
 
 // ---- geometry3d batch forms (geometry3d/batch.hpp) -------------------------------------------
 // Which elements of a stream one shape touches: indices ascending in `out` (room for `padded`),
@@ -241,10 +246,6 @@ extern const SelectKernel<PointQuery2d, RectsView> pointInRects, pointInRectsAut
 extern const SelectKernel<PointQuery2d, OrientedRectsView> pointInOrientedRects,
     pointInOrientedRectsAutovec;
 
-// How the 2D pair sweeps below run: Highway vectors, or the plain-loop baseline. (The batch
-// kernels above have Autovec twins instead; these two are to follow.)
-enum class Loop { kSimd, kAutovec };
-
 // 2D broadphase. One horizontal band's rectangles sorted by minX, each with its id and the first
 // band it covers (loBand), followed by kStreamPad sentinel entries (minX = +inf): the sweep
 // appends, for each rectangle k in that order, the pairs with the rectangles after it that overlap
@@ -257,9 +258,11 @@ struct SortedRects2d {
   std::size_t count;
   std::int32_t band;
 };
-void sweepRects2d(const SortedRects2d& rects, std::vector<Pair>& out, Loop loop = Loop::kSimd);
+extern const Kernel<void(const SortedRects2d&rects, std::vector<Pair>&out)> sweepRects2d,
+    sweepRects2dAutovec;
 // Every overlapping pair (i, j), i < j, of a rectangle stream, appended in ascending order.
-void bruteRects2d(const RectsView& v, std::vector<Pair>& out, Loop loop = Loop::kSimd);
+extern const Kernel<void(const RectsView&v, std::vector<Pair>&out)> bruteRects2d,
+    bruteRects2dAutovec;
 
 // ---- meshes: rays against a mesh's BVH (mesh_bvh.hpp, bvh_ray.cpp) ----------------------------
 }  // namespace simdphys::simd
@@ -283,8 +286,10 @@ struct RaysView {
 };
 // Per ray, the closest hit under mesh_bvh.hpp's rule (id kNoHit and t = inf for a miss), or
 // whether any triangle is hit (1 / 0): bit for bit what the reference traversal answers.
-void meshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t);
-void meshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit);
+extern const Kernel<void(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t)>
+    meshClosestHits;
+extern const Kernel<void(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit)>
+    meshAnyHits;
 
 // ---- meshes: ray packets (mesh_bvh.hpp, bvh_packet-inl.hpp) -------------------------------------
 }  // namespace simdphys::simd
@@ -297,17 +302,20 @@ inline constexpr std::uint32_t kAbsentLane = ~0u;
 // Rays traced in packets of `width` (8 or 16): packet p is the rays index[p * width + i] of `rays`
 // (kAbsentLane: none); each ray's closest hit is written at out[its index], equal to what
 // meshClosestHits answers for it.
-void meshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                           std::size_t packets, int width, MeshHit* out);
+extern const Kernel<void(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                         std::size_t packets, int width, MeshHit* out)>
+    meshClosestHitPackets;
 // The rays index[0, n) of `rays` one at a time, in that order, each hit written at out[its index].
-void meshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                       std::size_t n, MeshHit* out);
+extern const Kernel<void(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                         std::size_t n, MeshHit* out)>
+    meshClosestHitsOf;
 // For ordering rays so that neighbours walk the same nodes: per ray index[k] of `rays`, key[k] is
 // kMissKey if the ray enters no child of the root (it then hits nothing: the traversal's own first
 // test), else the Morton code (9 bits an axis, within the root's bounds) of the point where it
 // enters its nearest root child.
 inline constexpr std::uint32_t kMissKey = ~0u;
-void meshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                 std::size_t n, std::uint32_t* key);
+extern const Kernel<void(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
+                         std::size_t n, std::uint32_t* key)>
+    meshRayKeys;
 
 }  // namespace simdphys::simd

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -54,14 +55,7 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace simdphys::simd {
-HWY_EXPORT(SweepCell);
-HWY_EXPORT(SweepCellAutovec);
-
-void sweepCell(const SweepCell& c, std::vector<Pair>& out) {
-  HWY_DYNAMIC_DISPATCH(SweepCell)(c, out);
-}
-void sweepCellAutovec(const SweepCell& c, std::vector<Pair>& out) {
-  HWY_DYNAMIC_DISPATCH(SweepCellAutovec)(c, out);
-}
+SIMDPHYS_EXPORT(SweepCell, sweepCell);
+SIMDPHYS_EXPORT(SweepCellAutovec, sweepCellAutovec);
 }  // namespace simdphys::simd
 #endif

@@ -155,7 +155,7 @@ template <>
 void PairFinder2d::findWith(const RectStream& r, std::vector<Pair>& pairs, PairMethod2d method) {
   const PairMethod2d m = resolved(method, r);
   const bool plain = detail::plainLoopsActive();
-  const simd::Loop kernelLoop = plain ? simd::Loop::kAutovec : simd::Loop::kSimd;
+  const auto& sweepKernel = plain ? simd::sweepRects2dAutovec : simd::sweepRects2d;
   const bool reference = !plain && referencePathActive();
   switch (m) {
     case PairMethod2d::kAuto:  // resolved above
@@ -166,16 +166,13 @@ void PairFinder2d::findWith(const RectStream& r, std::vector<Pair>& pairs, PairM
     case PairMethod2d::kBrute:
       if (reference) return bruteReference(r, pairs);
       pairs.clear();
-      return simd::bruteRects2d(view(r), pairs, kernelLoop);
+      return (plain ? simd::bruteRects2dAutovec : simd::bruteRects2d)(view(r), pairs);
     case PairMethod2d::kBandedSweep:
     case PairMethod2d::kSweep: {
       const bool banded = m == PairMethod2d::kBandedSweep;
       if (reference)
         return scratch_->sweep(r, pairs, banded, reference::sweepScalar<simd::SortedRects2d>);
-      return scratch_->sweep(r, pairs, banded,
-                             [kernelLoop](const simd::SortedRects2d& s, std::vector<Pair>& out) {
-                               simd::sweepRects2d(s, out, kernelLoop);
-                             });
+      return scratch_->sweep(r, pairs, banded, sweepKernel);
     }
   }
   throw Error("PairFinder2d::find: unknown method " + std::to_string(int(method)));
