@@ -38,17 +38,16 @@ std::string describe(const RayStreamOptions& o) {
 }
 
 // Every mode, with packets of rows and (imageWidth > 0) of tiles, against single rays and brute
-// force. Returns how many rays hit.
+// force, on every path (brute force, which depends on no path, is computed once). Returns how many
+// rays hit.
 std::size_t checkModes(const Mesh& mesh, const std::vector<Ray>& rays,
                        const std::vector<float>& tMax, std::uint32_t imageWidth) {
-  const MeshBvh bvh(mesh);
   RayStream stream;
   std::vector<MeshHit> expected(rays.size());
   std::size_t hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     stream.push(rays[i], tMax[i]);
     expected[i] = test::bruteRaycast(mesh, rays[i], tMax[i]);
-    expectSame(bvh.raycast(rays[i], tMax[i]), expected[i], "single ray " + std::to_string(i));
     hits += expected[i].hit();
   }
   std::vector<RayStreamOptions> modes = {{Mode::kSingle, 0, 0},
@@ -60,21 +59,23 @@ std::size_t checkModes(const Mesh& mesh, const std::vector<Ray>& rays,
     for (std::uint32_t size : {8u, 16u})
       modes.push_back({Mode::kPackets, size, imageWidth}),
           modes.push_back({Mode::kAuto, size, imageWidth});
-  for (const RayStreamOptions& options : modes) {
-    std::vector<MeshHit> found(rays.size());
-    bvh.raycast(stream, found, options);
+  test::forEveryPath([&] {
+    const MeshBvh bvh(mesh);
     for (std::size_t i = 0; i < rays.size(); ++i)
-      expectSame(found[i], expected[i], describe(options) + ", ray " + std::to_string(i));
-  }
+      expectSame(bvh.raycast(rays[i], tMax[i]), expected[i], "single ray " + std::to_string(i));
+    for (const RayStreamOptions& options : modes) {
+      std::vector<MeshHit> found(rays.size());
+      bvh.raycast(stream, found, options);
+      for (std::size_t i = 0; i < rays.size(); ++i)
+        expectSame(found[i], expected[i], describe(options) + ", ray " + std::to_string(i));
+    }
+  });
   return hits;
 }
 
-class MeshPackets : public OnEveryPath {};
-SIMDPHYS_ON_EVERY_PATH(MeshPackets);
-
 // W2's camera over a G = 33 heightfield: coherent tiles. 62 x 45 leaves partial tiles at the
 // right and bottom edges (lanes without rays) and a tail of rays in the row packets.
-TEST_P(MeshPackets, HeightfieldCameraEqualsSingleRaysAndBruteForce) {
+TEST(MeshPackets, HeightfieldCameraEqualsSingleRaysAndBruteForceOnEveryPath) {
   const Mesh mesh = scenes::makeHeightfield(33);
   for (auto [w, h] : {std::pair{64u, 48u}, std::pair{62u, 45u}}) {
     const RayStream camera = scenes::makeCoherentRays(w, h);
@@ -90,7 +91,7 @@ TEST_P(MeshPackets, HeightfieldCameraEqualsSingleRaysAndBruteForce) {
 // one leaf test) and zero direction components (the comparison form of the slab test); finite
 // tMax values, 0 among them, cut hits off per lane. kAuto traces them as single rays, and there are
 // enough of them (over 4,096) that it first sorts them by where they enter the tree.
-TEST_P(MeshPackets, MixedDirectionPacketsEqualSingleRaysAndBruteForce) {
+TEST(MeshPackets, MixedDirectionPacketsEqualSingleRaysAndBruteForceOnEveryPath) {
   const Mesh soup = test::randomSoup(51, 3000, 40, 4);
   const std::vector<Ray> rays = test::randomRays(52, 4403, 50);  // a tail of 3 in packets of 8, 16
   std::vector<float> tMax(rays.size(), kInf);
@@ -102,7 +103,7 @@ TEST_P(MeshPackets, MixedDirectionPacketsEqualSingleRaysAndBruteForce) {
 // Rays from one point in every direction, on a 64 x 32 longitude-latitude grid: neighbours are
 // coherent, but tiles straddle octants and dominant axes, so packets stay together across
 // several shear frames.
-TEST_P(MeshPackets, CoherentRaysAcrossOctantsEqualSingleRaysAndBruteForce) {
+TEST(MeshPackets, CoherentRaysAcrossOctantsEqualSingleRaysAndBruteForceOnEveryPath) {
   const Mesh soup = test::randomSoup(53, 4000, 30, 5);
   std::vector<Ray> rays;
   constexpr std::uint32_t kWidth = 64, kHeight = 32;
@@ -122,7 +123,7 @@ TEST_P(MeshPackets, CoherentRaysAcrossOctantsEqualSingleRaysAndBruteForce) {
 // Watertightness in packets: rays aimed exactly at the vertices of a G = 33 heightfield and at
 // points on its shared edges, from above, must hit. Vertical rays form coherent packets (one
 // direction); oblique ones, from scattered points, diverge.
-TEST_P(MeshPackets, RaysAtSharedVerticesAndEdgesNeverMiss) {
+TEST(MeshPackets, RaysAtSharedVerticesAndEdgesNeverMissOnEveryPath) {
   constexpr std::uint32_t g = 33;
   const Mesh mesh = scenes::makeHeightfield(g);
   scenes::Random r(54);
@@ -145,9 +146,12 @@ TEST_P(MeshPackets, RaysAtSharedVerticesAndEdgesNeverMiss) {
   }
 }
 
+class MeshPacketsOnPath : public OnEveryPath {};
+SIMDPHYS_ON_EVERY_PATH(MeshPacketsOnPath);
+
 // The packet kernel itself, with lanes a stream cannot hold: rays with tMax = -inf (the streams'
 // padding value) hit nothing and leave the others' answers as they are.
-TEST_P(MeshPackets, LanesWithMinusInfinityTMaxHitNothing) {
+TEST_P(MeshPacketsOnPath, LanesWithMinusInfinityTMaxHitNothing) {
   if (referencePathActive()) GTEST_SKIP() << "the reference path has no packet kernel";
   const Mesh mesh = scenes::makeHeightfield(33);
   const MeshBvh bvh(mesh);
@@ -184,7 +188,7 @@ TEST_P(MeshPackets, LanesWithMinusInfinityTMaxHitNothing) {
 
 // A tree with no triangles: every mode answers every ray with a miss, also with enough single rays
 // (over 4,096) for kAuto to order them, and an empty stream is no error.
-TEST_P(MeshPackets, EmptyMeshMissesEveryRay) {
+TEST_P(MeshPacketsOnPath, EmptyMeshMissesEveryRay) {
   const MeshBvh bvh(Mesh{});
   const std::vector<Ray> rays = test::randomRays(54, 5000, 10);
   RayStream stream;

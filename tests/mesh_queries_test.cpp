@@ -53,11 +53,14 @@ TEST_P(MeshQueries, TreeStructureOverTriangles) {
   EXPECT_LE(tree.depth(), BvhNode::kMaxDepth);
 }
 
-TEST_P(MeshQueries, SegmentsEqualBruteForce) {
+// Segments, overlaps and refit against brute force on every path: brute force depends on no path,
+// so it is computed once and every path is run in this process.
+TEST(MeshQueries, SegmentsEqualBruteForceOnEveryPath) {
   const Mesh soup = test::randomSoup(52, 2000, 30, 4);
-  const MeshBvh bvh(soup);
   scenes::Random r(53);
-  std::size_t crossing = 0;
+  std::vector<Segment> segments;
+  std::vector<MeshHit> expected;
+  std::vector<bool> crosses;
   for (int i = 0; i < 1500; ++i) {
     const Vec3f a(r.uniform(-35, 35), r.uniform(-35, 35), r.uniform(-35, 35));
     const Vec3f b = a + r.uniform(0, 20) * r.unitDirection();
@@ -66,34 +69,45 @@ TEST_P(MeshQueries, SegmentsEqualBruteForce) {
     std::vector<MeshHit> hits;
     for (std::uint32_t k = 0; k < soup.size(); ++k)
       if (auto h = linecast(soup.triangle(k), s)) hits.push_back({k, h->t});
-    const MeshHit expected = test::closestByRule(hits);
-    const MeshHit found = bvh.linecast(s);
-    EXPECT_EQ(found.id, expected.id) << "segment " << i;
-    // t: the tree's t (in units of b - a) times the length, against the per-triangle linecast's
-    // same product: exact.
-    if (expected.hit()) {
-      EXPECT_EQ(found.t, expected.t) << "segment " << i;
-    }
     bool any = false;
     for (std::uint32_t k = 0; k < soup.size() && !any; ++k) any = linetest(soup.triangle(k), s);
-    EXPECT_EQ(bvh.linetest(s), any) << "segment " << i;
-    crossing += any;
+    segments.push_back(s), expected.push_back(test::closestByRule(hits)), crosses.push_back(any);
   }
-  EXPECT_GT(crossing, 50u);
-  // A segment lying in a triangle's plane, inside it: no crossing, but the linetest touches.
-  Mesh flat;
-  flat.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 0, 4}};
-  flat.triangles = {{0, 1, 2}};
-  const MeshBvh one(flat);
-  const Segment inPlane{{0.5f, 0, 0.5f}, {1.5f, 0, 0.5f}};
-  EXPECT_FALSE(one.linecast(inPlane).hit());
-  EXPECT_TRUE(one.linetest(inPlane));
+  EXPECT_GT(std::count(crosses.begin(), crosses.end(), true), 50);
+  test::forEveryPath([&] {
+    const MeshBvh bvh(soup);
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const MeshHit found = bvh.linecast(segments[i]);
+      EXPECT_EQ(found.id, expected[i].id) << "segment " << i;
+      // t: the tree's t (in units of b - a) times the length, against the per-triangle
+      // linecast's same product: exact.
+      if (expected[i].hit()) {
+        EXPECT_EQ(found.t, expected[i].t) << "segment " << i;
+      }
+      EXPECT_EQ(bvh.linetest(segments[i]), crosses[i]) << "segment " << i;
+    }
+    // A segment lying in a triangle's plane, inside it: no crossing, but the linetest touches.
+    Mesh flat;
+    flat.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 0, 4}};
+    flat.triangles = {{0, 1, 2}};
+    const MeshBvh one(flat);
+    const Segment inPlane{{0.5f, 0, 0.5f}, {1.5f, 0, 0.5f}};
+    EXPECT_FALSE(one.linecast(inPlane).hit());
+    EXPECT_TRUE(one.linetest(inPlane));
+  });
 }
 
-TEST_P(MeshQueries, OverlapsEqualBruteForce) {
+TEST(MeshQueries, OverlapsEqualBruteForceOnEveryPath) {
   const Mesh soup = test::randomSoup(54, 3000, 40, 3);
-  const MeshBvh bvh(soup);
+  struct Query {
+    Sphere sphere;
+    Aabb box;
+    Obb obb;
+    Triangle tri;
+    std::vector<std::uint32_t> expected[4];  // sphere, box, obb, triangle
+  };
   scenes::Random r(55);
+  std::vector<Query> queries;
   std::size_t found = 0;
   for (int i = 0; i < 200; ++i) {
     const Vec3f c(r.uniform(-45, 45), r.uniform(-45, 45), r.uniform(-45, 45));
@@ -103,41 +117,60 @@ TEST_P(MeshQueries, OverlapsEqualBruteForce) {
     const Obb obb{c, h, Eigen::AngleAxisf(r.uniform(0, 3), r.unitDirection()).toRotationMatrix()};
     const Triangle tri{c + 5 * r.unitDirection(), c + 5 * r.unitDirection(),
                        c + 5 * r.unitDirection()};
-    const std::string at = "query " + std::to_string(i);
-    EXPECT_EQ(bvh.overlapping(sphere), test::bruteOverlapping(soup, sphere)) << at;
-    EXPECT_EQ(bvh.overlapping(box), test::bruteOverlapping(soup, box)) << at;
-    EXPECT_EQ(bvh.overlapping(obb), test::bruteOverlapping(soup, obb)) << at;
-    EXPECT_EQ(bvh.overlapping(tri), test::bruteOverlapping(soup, tri)) << at;
-    found += bvh.overlapping(sphere).size();
+    queries.push_back({sphere,
+                       box,
+                       obb,
+                       tri,
+                       {test::bruteOverlapping(soup, sphere), test::bruteOverlapping(soup, box),
+                        test::bruteOverlapping(soup, obb), test::bruteOverlapping(soup, tri)}});
+    found += queries.back().expected[0].size();
   }
   EXPECT_GT(found, 100u);
+  test::forEveryPath([&] {
+    const MeshBvh bvh(soup);
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const Query& q = queries[i];
+      const std::string at = "query " + std::to_string(i);
+      EXPECT_EQ(bvh.overlapping(q.sphere), q.expected[0]) << at;
+      EXPECT_EQ(bvh.overlapping(q.box), q.expected[1]) << at;
+      EXPECT_EQ(bvh.overlapping(q.obb), q.expected[2]) << at;
+      EXPECT_EQ(bvh.overlapping(q.tri), q.expected[3]) << at;
+    }
+  });
 }
 
 // Refit after the heightfield's heights change: the same answers as a rebuild on the moved mesh
 // (both equal brute force on it, exactly: the triangle tests do not depend on the tree).
-TEST_P(MeshQueries, RefitAnswersLikeARebuild) {
+TEST(MeshQueries, RefitAnswersLikeARebuildOnEveryPath) {
   Mesh mesh = scenes::makeHeightfield(33);
-  MeshBvh bvh(mesh);
+  const std::vector<Vec3f> original = mesh.vertices;
   std::vector<Vec3f> moved = mesh.vertices;
   for (Vec3f& v : moved) v.y() = 2 * v.y() + 0.1f * v.x() - 5;
-  bvh.refit(moved);
   mesh.vertices = moved;
-  const MeshBvh rebuilt(mesh);
   const RayStream rays = scenes::makeIncoherentRays(3000);
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    const MeshHit a = bvh.raycast(rays[i]), b = rebuilt.raycast(rays[i]);
-    const MeshHit expected = test::bruteRaycast(mesh, rays[i]);
-    EXPECT_EQ(a.id, expected.id) << "ray " << i;
-    EXPECT_EQ(b.id, expected.id) << "ray " << i;
-    if (expected.hit()) {
-      EXPECT_EQ(a.t, expected.t) << "ray " << i;
-    }
-  }
+  std::vector<MeshHit> expected;
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    expected.push_back(test::bruteRaycast(mesh, rays[i]));
   const Sphere s{{10, 0, 10}, 8};
-  EXPECT_EQ(bvh.overlapping(s), test::bruteOverlapping(mesh, s));
-  test::expectError([&] { bvh.refit(std::vector<Vec3f>(3)); }, "MeshBvh::refit: 3 vertices");
-  moved[7].x() = NAN;
-  test::expectError([&] { bvh.refit(moved); }, "vertex 7");
+  const std::vector<std::uint32_t> overlapping = test::bruteOverlapping(mesh, s);
+  test::forEveryPath([&] {
+    MeshBvh bvh(Mesh{original, mesh.triangles});
+    bvh.refit(moved);
+    const MeshBvh rebuilt(mesh);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const MeshHit a = bvh.raycast(rays[i]), b = rebuilt.raycast(rays[i]);
+      EXPECT_EQ(a.id, expected[i].id) << "ray " << i;
+      EXPECT_EQ(b.id, expected[i].id) << "ray " << i;
+      if (expected[i].hit()) {
+        EXPECT_EQ(a.t, expected[i].t) << "ray " << i;
+      }
+    }
+    EXPECT_EQ(bvh.overlapping(s), overlapping);
+    test::expectError([&] { bvh.refit(std::vector<Vec3f>(3)); }, "MeshBvh::refit: 3 vertices");
+    std::vector<Vec3f> bad = moved;
+    bad[7].x() = NAN;
+    test::expectError([&] { bvh.refit(bad); }, "vertex 7");
+  });
 }
 
 // Procedural meshes: closed and facing out (every normal points away from the centre), so a ray

@@ -23,34 +23,37 @@ void expectSame(const MeshHit& found, const MeshHit& expected, const std::string
   }
 }
 
-// The closest hits of `rays`, one at a time and as a stream, against brute force.
+// The closest hits of `rays`, one at a time and as a stream, against brute force, on every path
+// (brute force, which depends on no path, is computed once).
 void checkAgainstBruteForce(const Mesh& mesh, const std::vector<Ray>& rays, float tMax) {
-  const MeshBvh bvh(mesh);
   RayStream stream;
-  for (const Ray& r : rays) stream.push(r, tMax);
-  std::vector<MeshHit> streamed(rays.size());
-  bvh.raycast(stream, streamed);
-  std::vector<std::uint8_t> occluded(rays.size());
-  bvh.occluded(stream, occluded);
+  std::vector<MeshHit> expected(rays.size());
   std::size_t hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
-    const MeshHit expected = test::bruteRaycast(mesh, rays[i], tMax);
-    hits += expected.hit();
-    const std::string what = "ray " + std::to_string(i);
-    expectSame(bvh.raycast(rays[i], tMax), expected, what);
-    expectSame(streamed[i], expected, what + " (stream)");
-    EXPECT_EQ(bvh.occluded(rays[i], tMax), expected.hit()) << what;
-    EXPECT_EQ(occluded[i] != 0, expected.hit()) << what << " (stream)";
+    stream.push(rays[i], tMax);
+    expected[i] = test::bruteRaycast(mesh, rays[i], tMax);
+    hits += expected[i].hit();
   }
   // The sets must exercise both outcomes, or the comparison proves little.
   EXPECT_GT(hits, rays.size() / 10);
   EXPECT_LT(hits, rays.size());
+  test::forEveryPath([&] {
+    const MeshBvh bvh(mesh);
+    std::vector<MeshHit> streamed(rays.size());
+    bvh.raycast(stream, streamed);
+    std::vector<std::uint8_t> occluded(rays.size());
+    bvh.occluded(stream, occluded);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const std::string what = "ray " + std::to_string(i);
+      expectSame(bvh.raycast(rays[i], tMax), expected[i], what);
+      expectSame(streamed[i], expected[i], what + " (stream)");
+      EXPECT_EQ(bvh.occluded(rays[i], tMax), expected[i].hit()) << what;
+      EXPECT_EQ(occluded[i] != 0, expected[i].hit()) << what << " (stream)";
+    }
+  });
 }
 
-class MeshRays : public OnEveryPath {};
-SIMDPHYS_ON_EVERY_PATH(MeshRays);
-
-TEST_P(MeshRays, HeightfieldSubsetEqualsBruteForce) {
+TEST(MeshRays, HeightfieldSubsetEqualsBruteForceOnEveryPath) {
   const Mesh mesh = scenes::makeHeightfield(33);  // 2,048 triangles
   std::vector<Ray> rays;
   const RayStream camera = scenes::makeCoherentRays(64, 48);
@@ -60,7 +63,7 @@ TEST_P(MeshRays, HeightfieldSubsetEqualsBruteForce) {
   checkAgainstBruteForce(mesh, rays, std::numeric_limits<float>::infinity());
 }
 
-TEST_P(MeshRays, RandomSoupEqualsBruteForce) {
+TEST(MeshRays, RandomSoupEqualsBruteForceOnEveryPath) {
   const Mesh soup = test::randomSoup(41, 3000, 40, 4);
   checkAgainstBruteForce(soup, test::randomRays(42, 3000, 50),
                          std::numeric_limits<float>::infinity());
@@ -68,9 +71,12 @@ TEST_P(MeshRays, RandomSoupEqualsBruteForce) {
   checkAgainstBruteForce(soup, test::randomRays(43, 2000, 50), 30.0f);
 }
 
+class MeshRaysOnPath : public OnEveryPath {};
+SIMDPHYS_ON_EVERY_PATH(MeshRaysOnPath);
+
 // Many triangles hit at the same t: a fan around a vertex, and coincident copies of one
 // triangle, whose tie is decided by the smaller id whatever the tree's order.
-TEST_P(MeshRays, TiesGoToTheSmallerId) {
+TEST_P(MeshRaysOnPath, TiesGoToTheSmallerId) {
   Mesh m;
   m.vertices.push_back({0, 0, 0});
   constexpr int kFan = 24;
@@ -95,12 +101,11 @@ TEST_P(MeshRays, TiesGoToTheSmallerId) {
 // edges, from above, must hit (the surface is a graph over the square, so a ray descending into
 // its interior crosses it; no expectation comes from the code under test). Vertical rays pass
 // exactly through the vertex or edge point; oblique ones through its rounding.
-TEST_P(MeshRays, RaysAtSharedVerticesAndEdgesNeverMiss) {
+TEST(MeshRays, RaysAtSharedVerticesAndEdgesNeverMissOnEveryPath) {
   constexpr std::uint32_t g = 33;
   const Mesh mesh = scenes::makeHeightfield(g);
-  const MeshBvh bvh(mesh);
   scenes::Random r(44);
-  std::size_t tested = 0;
+  std::vector<Ray> rays;
   for (std::uint32_t j = 1; j + 1 < g; ++j)
     for (std::uint32_t i = 1; i + 1 < g; ++i) {
       const Vec3f v = mesh.vertices[j * g + i];
@@ -111,68 +116,54 @@ TEST_P(MeshRays, RaysAtSharedVerticesAndEdgesNeverMiss) {
         const Ray vertical{{target.x(), 50, target.z()}, {0, -1, 0}};
         const Vec3f from(target.x() + r.uniform(-10, 10), 50, target.z() + r.uniform(-10, 10));
         const Ray oblique{from, target - from};  // not unit: t is in units of it
-        for (const Ray& ray : {vertical, oblique}) {
-          const MeshHit h = bvh.raycast(ray);
-          ASSERT_TRUE(h.hit()) << "missed " << target.transpose() << " from "
-                               << ray.origin.transpose();
-          expectSame(h, test::bruteRaycast(mesh, ray), "aimed ray");
-          ++tested;
-        }
+        rays.push_back(vertical), rays.push_back(oblique);
       }
     }
-  EXPECT_EQ(tested, std::size_t(6 * (g - 2) * (g - 2)));
-}
-
-// W2 at full size (G = 513) on this path: the figures of WORKLOADS.md, and every ray against the
-// double-precision grid walk (every 7th ray, to keep the test short).
-// W2's inputs, tree and double-precision reference hits (of every 7th ray) depend on no path:
-// built once per process (ctest runs each path's case in its own).
-struct W2Set {
-  RayStream rays;
-  scenes::RaysReference figures;
-  std::vector<std::size_t> sampled;  // indices of the sampled rays
-  std::vector<scenes::ReferenceHit> reference;
-};
-struct W2 {
-  Mesh mesh = scenes::makeHeightfield();
-  MeshBvh bvh{mesh};
-  std::vector<W2Set> sets;
-};
-const W2& w2() {
-  static const W2 w = [] {
-    W2 out;
-    for (auto [rays, figures] :
-         {std::pair{scenes::makeCoherentRays(), scenes::kCoherentReference},
-          std::pair{scenes::makeIncoherentRays(), scenes::kIncoherentReference}}) {
-      W2Set set{std::move(rays), figures, {}, {}};
-      RayStream sample;
-      for (std::size_t i = 0; i < set.rays.size(); i += 7)
-        sample.push(set.rays[i]), set.sampled.push_back(i);
-      set.reference = scenes::referenceHits(out.mesh, scenes::kRaysGrid, sample);
-      out.sets.push_back(std::move(set));
+  EXPECT_EQ(rays.size(), std::size_t(6 * (g - 2) * (g - 2)));
+  std::vector<MeshHit> expected;
+  for (const Ray& ray : rays) expected.push_back(test::bruteRaycast(mesh, ray));
+  test::forEveryPath([&] {
+    const MeshBvh bvh(mesh);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const MeshHit h = bvh.raycast(rays[i]);
+      ASSERT_TRUE(h.hit()) << "missed ray " << i << " from " << rays[i].origin.transpose();
+      expectSame(h, expected[i], "aimed ray");
     }
-    return out;
-  }();
-  return w;
+  });
 }
 
-TEST_P(MeshRays, W2FiguresAndDoubleReference) {
-  for (const W2Set& s : w2().sets) {
-    std::vector<MeshHit> hits(s.rays.size());
-    w2().bvh.raycast(s.rays, hits);
-    const scenes::RaysReference found = scenes::summarise(hits);
-    EXPECT_EQ(found.hits, s.figures.hits);
-    // The figure has 8 significant digits.
-    EXPECT_NEAR(found.sumT, s.figures.sumT, scenes::kSumTTolerance * s.figures.sumT);
-    std::vector<MeshHit> sampleHits;
-    for (std::size_t i : s.sampled) sampleHits.push_back(hits[i]);
-    const auto c = scenes::compareWithReference(sampleHits, s.reference);
-    // W2: rays may differ from the double reference only where its hit is within 1e-5 of an edge.
-    EXPECT_EQ(c.differ, 0u);
-    // Same triangle: t within a few float roundings of the double t (float's eps is 1.2e-7; the
-    // watertight t carries a division and sums of products of differences, and t ~ 100 is the
-    // difference of coordinates ~ 100: 1e-5 relative bounds it with room).
-    EXPECT_LT(c.maxRelativeT, 1e-5);
+// W2 at full size (G = 513) on every path: the figures of WORKLOADS.md, and every 7th ray against
+// the double-precision grid walk (to keep the test short). The inputs, the tree and the reference
+// hits depend on no path, so they are built once and every path is run in this one process.
+TEST(MeshRays, W2FiguresAndDoubleReferenceOnEveryPath) {
+  const Mesh mesh = scenes::makeHeightfield();
+  const MeshBvh bvh(mesh);
+  for (auto [rays, figures] :
+       {std::pair{scenes::makeCoherentRays(), scenes::kCoherentReference},
+        std::pair{scenes::makeIncoherentRays(), scenes::kIncoherentReference}}) {
+    RayStream sample;
+    std::vector<std::size_t> sampled;
+    for (std::size_t i = 0; i < rays.size(); i += 7) sample.push(rays[i]), sampled.push_back(i);
+    const std::vector<scenes::ReferenceHit> reference =
+        scenes::referenceHits(mesh, scenes::kRaysGrid, sample);
+    test::forEveryPath([&] {
+      std::vector<MeshHit> hits(rays.size());
+      bvh.raycast(rays, hits);
+      const scenes::RaysReference found = scenes::summarise(hits);
+      EXPECT_EQ(found.hits, figures.hits);
+      // The figure has 8 significant digits.
+      EXPECT_NEAR(found.sumT, figures.sumT, scenes::kSumTTolerance * figures.sumT);
+      std::vector<MeshHit> sampleHits;
+      for (std::size_t i : sampled) sampleHits.push_back(hits[i]);
+      const auto c = scenes::compareWithReference(sampleHits, reference);
+      // W2: rays may differ from the double reference only where its hit is within 1e-5 of an
+      // edge.
+      EXPECT_EQ(c.differ, 0u);
+      // Same triangle: t within a few float roundings of the double t (float's eps is 1.2e-7; the
+      // watertight t carries a division and sums of products of differences, and t ~ 100 is the
+      // difference of coordinates ~ 100: 1e-5 relative bounds it with room).
+      EXPECT_LT(c.maxRelativeT, 1e-5);
+    });
   }
 }
 

@@ -22,6 +22,18 @@ class OnEveryPath : public ::testing::TestWithParam<std::string> {
   std::string previous_;
 };
 
+// Runs body() once on every path, in this process, naming the path in any failure. For tests
+// whose inputs are expensive and path-independent (a full-size workload, its trees and its double
+// reference): built once and shared, rather than once per path's process as OnEveryPath does.
+template <class Body>
+void forEveryPath(Body&& body) {
+  for (const std::string& path : availablePaths()) {
+    SCOPED_TRACE("path " + path);
+    const ScopedPath on(path);
+    body();
+  }
+}
+
 }  // namespace simdphys::test
 
 #define SIMDPHYS_ON_EVERY_PATH(Suite)                                                       \

@@ -62,60 +62,63 @@ std::vector<Frustum> frustums(unsigned seed) {
 class SceneOctree : public OnEveryPath {};
 SIMDPHYS_ON_EVERY_PATH(SceneOctree);
 
-// W6 and its two trees, built once for every path (the trees do not depend on the path).
-struct W6Trees {
-  scenes::CullWorkload w = scenes::makeCullWorkload(1'000'000);
-  Octree octree{w.boxes};
-  Bvh bvh;
-  W6Trees() {
-    BoxStream boxes;
-    for (std::size_t i = 0; i < w.boxes.size(); ++i) boxes.push(w.boxes[i]);
-    bvh.build(boxes);
-  }
-};
-const W6Trees& w6() {
-  static const W6Trees trees;
-  return trees;
+// The exact figure of workload W6 (102,099 boxes) through the octree and the BVH, on every path.
+// The workload and its two trees depend on no path: built once, every path run in this process.
+TEST(SceneOctreeW6, BoxesThroughOctreeAndBvhOnEveryPath) {
+  const scenes::CullWorkload w = scenes::makeCullWorkload(1'000'000);
+  const Octree octree(w.boxes);
+  BoxStream boxes;
+  for (std::size_t i = 0; i < w.boxes.size(); ++i) boxes.push(w.boxes[i]);
+  const Bvh bvh(boxes);
+  test::forEveryPath([&] {
+    std::vector<std::uint32_t> flat, viaOctree, viaBvh;
+    cull(w.frustum, w.boxes, flat);
+    octree.cull(w.frustum, viaOctree);
+    cull(w.frustum, bvh, w.boxes, viaBvh);
+    EXPECT_EQ(flat.size(), scenes::kCullBoxesVisible);
+    EXPECT_EQ(viaOctree, flat);
+    EXPECT_EQ(viaBvh, flat);
+  });
 }
 
-// The exact figure of workload W6 (102,099 boxes) through the octree and the BVH.
-TEST_P(SceneOctree, W6BoxesThroughOctreeAndBvh) {
-  const auto& [w, octree, bvh] = w6();
-  std::vector<std::uint32_t> flat, viaOctree, viaBvh;
-  cull(w.frustum, w.boxes, flat);
-  octree.cull(w.frustum, viaOctree);
-  cull(w.frustum, bvh, w.boxes, viaBvh);
-  EXPECT_EQ(flat.size(), scenes::kCullBoxesVisible);
-  EXPECT_EQ(viaOctree, flat);
-  EXPECT_EQ(viaBvh, flat);
-}
-
-TEST_P(SceneOctree, CullAndQueriesEqualBruteForce) {
+// Brute force depends on no path: computed once, every path run in this process.
+TEST(SceneOctreeBruteForce, CullAndQueriesEqualBruteForceOnEveryPath) {
   const BoundsStream boxes = mixedBoxes(20'000, 7);
-  for (const OctreeOptions& options :
-       {OctreeOptions{}, OctreeOptions{4, 10}, OctreeOptions{1000, 2}}) {
-    const Octree octree(boxes, options);
-    BoxStream minMax;
-    for (std::size_t i = 0; i < boxes.size(); ++i) minMax.push(boxes[i]);
-    const Bvh bvh(minMax);
-    std::vector<std::uint32_t> viaOctree, viaBvh;
-    for (const Frustum& f : frustums(8)) {
-      const auto expected = bruteCull(f, boxes);
-      octree.cull(f, viaOctree);
-      cull(f, bvh, boxes, viaBvh);
-      EXPECT_EQ(viaOctree, expected) << "leaf size " << options.maxLeafSize;
-      EXPECT_EQ(viaBvh, expected);
-    }
-    std::mt19937 rng(9);
-    std::uniform_real_distribution<float> pos(-120, 120), size(0, 30);
-    for (int q = 0; q < 50; ++q) {
-      const Sphere s{{pos(rng), pos(rng), pos(rng)}, size(rng)};
-      const Vec3f c(pos(rng), pos(rng), pos(rng)), h(size(rng), size(rng), size(rng));
-      const Aabb box{c - h, c + h};
-      EXPECT_EQ(octree.query(s), bruteQuery(s, boxes));
-      EXPECT_EQ(octree.query(box), bruteQuery(box, boxes));
-    }
+  BoxStream minMax;
+  for (std::size_t i = 0; i < boxes.size(); ++i) minMax.push(boxes[i]);
+  const std::vector<Frustum> views = frustums(8);
+  std::vector<std::vector<std::uint32_t>> culled;
+  for (const Frustum& f : views) culled.push_back(bruteCull(f, boxes));
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> pos(-120, 120), size(0, 30);
+  std::vector<Sphere> spheres;
+  std::vector<Aabb> aabbs;
+  std::vector<std::vector<std::uint32_t>> inSphere, inBox;
+  for (int q = 0; q < 50; ++q) {
+    const Sphere s{{pos(rng), pos(rng), pos(rng)}, size(rng)};
+    const Vec3f c(pos(rng), pos(rng), pos(rng)), h(size(rng), size(rng), size(rng));
+    const Aabb box{c - h, c + h};
+    spheres.push_back(s), aabbs.push_back(box);
+    inSphere.push_back(bruteQuery(s, boxes)), inBox.push_back(bruteQuery(box, boxes));
   }
+  test::forEveryPath([&] {
+    for (const OctreeOptions& options :
+         {OctreeOptions{}, OctreeOptions{4, 10}, OctreeOptions{1000, 2}}) {
+      const Octree octree(boxes, options);
+      const Bvh bvh(minMax);
+      std::vector<std::uint32_t> viaOctree, viaBvh;
+      for (std::size_t v = 0; v < views.size(); ++v) {
+        octree.cull(views[v], viaOctree);
+        cull(views[v], bvh, boxes, viaBvh);
+        EXPECT_EQ(viaOctree, culled[v]) << "leaf size " << options.maxLeafSize;
+        EXPECT_EQ(viaBvh, culled[v]);
+      }
+      for (std::size_t q = 0; q < spheres.size(); ++q) {
+        EXPECT_EQ(octree.query(spheres[q]), inSphere[q]);
+        EXPECT_EQ(octree.query(aabbs[q]), inBox[q]);
+      }
+    }
+  });
 }
 
 // The book's update: moved boxes leave their old leaves and enter new ones, some far outside the
