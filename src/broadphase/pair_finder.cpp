@@ -9,9 +9,9 @@ namespace simdphys {
 namespace {
 
 // After the counting sort on a, each run of one a is put in order by b. Runs of up to kReach + 1
-// pairs (nine in ten at W1) without a branch: each pair moves by how many pairs of its run within
-// kReach places belong on its other side. Branching insertion sorts, whose mispredictions cost
-// most of the sort when every run had one, remain for the longer runs only.
+// pairs (97 % of the runs, 89 % of the pairs at W1) without a branch: each pair moves by how many
+// pairs of its run within kReach places belong on its other side. Branching insertion sorts, whose
+// mispredictions cost most of the sort when every run had one, remain for the longer runs only.
 constexpr std::ptrdiff_t kReach = 6;
 constexpr std::uint32_t kLongRun = kReach + 1;
 
