@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include <omp.h>
+
 #include "box_sets.hpp"
 #include "paths.hpp"
 #include "testing/pairs.hpp"
@@ -82,6 +84,25 @@ TEST_P(Pairs, EveryMethodReturnsPairsSorted) {
       EXPECT_EQ(pairs, want) << set.name << ", method " << int(m);
     }
   }
+}
+
+// More pairs than the pair sorter's chunk and its parallel threshold, over several buckets of a:
+// the same sorted pairs on one thread and on more, for every method.
+TEST_P(Pairs, ManyPairsSortedAtAnyThreadCount) {
+  static const BoxStream boxes = test::randomBoxes(35, 4500, 10, 0.5f, 2.5f);
+  static const std::vector<Pair> want = test::bruteForcePairs(boxes);  // the same on every path
+  ASSERT_GT(want.size(), 150'000u);
+  const int threads = omp_get_max_threads();
+  PairFinder finder;
+  std::vector<Pair> pairs;
+  for (int t : {1, 2, 3}) {
+    omp_set_num_threads(t);
+    for (PairMethod m : kMethods) {
+      finder.find(boxes, pairs, m);
+      EXPECT_EQ(pairs, want) << t << " threads, method " << int(m);
+    }
+  }
+  omp_set_num_threads(threads);
 }
 
 // The plain-loop baseline of the benchmarks (testing/pairs.hpp) finds the same pairs; it has no

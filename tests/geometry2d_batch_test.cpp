@@ -451,6 +451,27 @@ TEST_P(Broadphase2d, EveryMethodEqualsBruteForce) {
   }
 }
 
+// Bands whose pairs fill several of the pair sorter's chunks, over two buckets of a: the sweeps
+// deal them to the sorter in parts, and the parts come out as one sorted list.
+TEST_P(Broadphase2d, ManyBandsOfManyPairsComeOutSorted) {
+  static const RectStream rects = [] {
+    RectStream s;
+    scenes::Random r(75);
+    for (int i = 0; i < 8000; ++i)
+      s.push(Rect::fromCenter(Vec2f(r.uniform(-1, 1), r.uniform(-2000, 2000)),
+                              Vec2f(r.uniform(0, 1), r.uniform(0, 4))));
+    return s;
+  }();
+  static const std::vector<Pair> want = bruteForcePairs(rects);  // the same on every path
+  ASSERT_GT(want.size(), 40'000u);
+  PairFinder2d finder;
+  std::vector<Pair> pairs;
+  for (PairMethod2d method : {PairMethod2d::kBandedSweep, PairMethod2d::kSweep}) {
+    finder.find(rects, pairs, method);
+    EXPECT_EQ(pairs, want) << "method " << int(method);
+  }
+}
+
 TEST_P(Broadphase2d, PlainLoopBaselinesEqualBruteForce) {
   if (referencePathActive()) GTEST_SKIP() << "the baselines are compiled per SIMD target";
   test::PlainLoopPairFinder2d finder;

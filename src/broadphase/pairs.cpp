@@ -83,8 +83,10 @@ struct CellBuffer {
   simd::SweepCell load(const Entry* e, std::size_t n, int cy, int cz) {
     const float inf = std::numeric_limits<float>::infinity();
     const std::size_t size = n + kStreamPad;
-    for (auto* v : {&minX, &minY, &minZ}) v->assign(size, inf);
-    for (auto* v : {&maxX, &maxY, &maxZ}) v->assign(size, -inf);
+    // Only the sentinels need setting: the entries are written below.
+    for (auto* v : {&minX, &minY, &minZ}) v->resize(size), std::fill(v->begin() + n, v->end(), inf);
+    for (auto* v : {&maxX, &maxY, &maxZ})
+      v->resize(size), std::fill(v->begin() + n, v->end(), -inf);
     id.resize(size), loY.resize(size), loZ.resize(size), keys.resize(n);
     for (std::size_t k = 0; k < n; ++k) keys[k] = e[k].minX;
     const auto& order = sorter.sort(keys.data(), n);
@@ -120,7 +122,7 @@ struct PairFinder::Scratch {
   std::vector<std::uint32_t> begin, cursor;  // per cell, into entries
   std::vector<Entry> entries;                // cell by cell, each in id order
   std::vector<CellBuffer> buffers;           // one per thread
-  std::vector<std::vector<Pair>> rowPairs;   // one per grid row, sorted together
+  std::vector<std::vector<Pair>> rowPairs;   // one per grid row, dealt to the sorter
   PairSorter sorter;
 
   template <class Sweep>
@@ -144,8 +146,9 @@ struct PairFinder::Scratch {
       for (int cy = y0[i]; cy <= y1[i]; ++cy)
         for (int cz = z0[i]; cz <= z1[i]; ++cz) entries[cursor[std::size_t(cy) * g.nz + cz]++] = e;
     }
-    // Rows are independent; each fills its own list.
+    // Rows are independent; each fills its own list and deals it while it is in cache.
     rowPairs.resize(g.ny);
+    sorter.begin(std::size_t(g.ny), n);
     buffers.resize(std::size_t(omp_get_max_threads()));
 #pragma omp parallel for schedule(dynamic)
     for (int cy = 0; cy < g.ny; ++cy) {
@@ -156,8 +159,9 @@ struct PairFinder::Scratch {
         sweep(buffer.load(entries.data() + begin[c], begin[c + 1] - begin[c], cy, cz),
               rowPairs[cy]);
       }
+      sorter.deal(std::size_t(cy), rowPairs[cy]);
     }
-    sorter.sort({rowPairs.data(), std::size_t(g.ny)}, n, pairs);
+    sorter.finish(pairs);
   }
 };
 

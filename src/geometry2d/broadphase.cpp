@@ -66,7 +66,7 @@ struct PairFinder2d::Scratch {
   std::vector<std::uint32_t> id;
   std::vector<std::int32_t> loBand, hiBand, bandLo;
   std::vector<std::uint32_t> begin, cursor;  // per band, into the arrays above
-  std::vector<Pair> unsorted;                // the bands' pairs
+  std::vector<Pair> unsorted;                // the bands' pairs not yet dealt
   PairSorter pairSorter;
 
   // Sorts all rectangles by minX once (ties in index order), then deals them out to their bands in
@@ -112,8 +112,17 @@ struct PairFinder2d::Scratch {
     unsorted.clear();
     const Bands b = chooseBands(r, banded);
     fillBands(r, b);
-    for (std::size_t k = 0; k < std::size_t(b.count); ++k) sweepKernel(band(k), unsorted);
-    pairSorter.sort({&unsorted, 1}, r.size(), pairs);
+    // The bands' pairs go to the sorter a chunk's worth at a time, while in cache.
+    const std::size_t bands = std::size_t(b.count);
+    pairSorter.begin(bands, r.size());
+    for (std::size_t k = 0, part = 0; k < bands; ++k) {
+      sweepKernel(band(k), unsorted);
+      if (unsorted.size() >= PairSorter::kChunk || k + 1 == bands) {
+        pairSorter.deal(part++, unsorted);
+        unsorted.clear();
+      }
+    }
+    pairSorter.finish(pairs);
   }
 };
 
