@@ -12,10 +12,7 @@
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/compress-inl.hpp"
 #include "simd/shapes2d-inl.hpp"
@@ -140,9 +137,7 @@ SIMDPHYS_TWO_FORMS(PointInOrientedRects, PointQuery2d, OrientedRectsView)
 
 #undef SIMDPHYS_TWO_FORMS
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

@@ -19,10 +19,7 @@ namespace simdphys::simd::detail::rays {
 using simdphys::detail::differenceOfProducts;
 }
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/compress-inl.hpp"
 #include "simd/watertight-inl.hpp"
@@ -363,9 +360,7 @@ StreamHit RayClosestTriangleAutovec(const WatertightQuery& r, const TrianglesVie
   return best;
 }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

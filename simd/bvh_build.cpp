@@ -14,10 +14,7 @@
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 // A row's x, y, z in one vector (or, on HWY_SCALAR, one lane at a time).
 using D = hn::CappedTag<float, 4>;
@@ -150,9 +147,7 @@ void BvhBounds(const detail::BvhPrimRef* prims, std::size_t n, BvhBox& box, BvhB
   b.store(box, centroids);
 }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

@@ -12,10 +12,7 @@
 #include "simd/kernels.hpp"
 #include "simdphys/bvh_types.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "core/bvh_walk-inl.hpp"
 #include "simd/box_overlap-inl.hpp"
@@ -102,9 +99,7 @@ void BvhQuery(const BvhNode* nodes, std::size_t nodeCount, const Box& query,
   walkBvh(nodes, nodeCount, walk, 0u);
 }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

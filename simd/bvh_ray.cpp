@@ -20,10 +20,7 @@
 #include "simd/kernels.hpp"
 #include "simdphys/bvh_types.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "core/bvh_walk-inl.hpp"
 #include "core/closest_hits-inl.hpp"
@@ -226,9 +223,7 @@ void MeshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) 
   }
 }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

@@ -9,10 +9,7 @@
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/compress-inl.hpp"
 
@@ -88,9 +85,7 @@ std::size_t CullBoundsAutovec(const Planes& p, const BoundsView& b, std::uint32_
   return count;
 }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

@@ -1,11 +1,25 @@
-// Defines a kernel declared in kernels.hpp from its per-target implementations: after
-// HWY_EXPORT(Target), `name` calls the chosen target's Target. One line per kernel, in the
-// HWY_ONCE part of the kernel's file.
+// The frame every kernel file shares. A kernel file is compiled once per target by
+// hwy/foreach_target.h: its per-target code stands between SIMDPHYS_TARGET_BEGIN() and
+// SIMDPHYS_TARGET_END() (the namespace simdphys::simd::HWY_NAMESPACE, compiled for that target,
+// with `hn` naming Highway's ops), and its HWY_ONCE part defines each kernel declared in
+// kernels.hpp with one SIMDPHYS_EXPORT line: after HWY_EXPORT(Target), `name` calls the chosen
+// target's Target.
 #pragma once
 
 #include <hwy/highway.h>
 
 #include <type_traits>
+
+#define SIMDPHYS_TARGET_BEGIN() \
+  HWY_BEFORE_NAMESPACE();       \
+  namespace simdphys::simd {    \
+  namespace HWY_NAMESPACE {     \
+  namespace hn = hwy::HWY_NAMESPACE
+
+#define SIMDPHYS_TARGET_END()      \
+  } /* namespace HWY_NAMESPACE */  \
+  } /* namespace simdphys::simd */ \
+  HWY_AFTER_NAMESPACE()
 
 #define SIMDPHYS_EXPORT(Target, name)                                               \
   HWY_EXPORT(Target);                                                               \

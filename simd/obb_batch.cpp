@@ -15,10 +15,7 @@
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/compress-inl.hpp"
 
@@ -228,9 +225,7 @@ std::size_t ObbOverlapsObbsAutovec(const ObbQuery& query, const ObbsView& v, std
   return count;
 }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

@@ -8,10 +8,7 @@
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/box_overlap-inl.hpp"
 
@@ -57,9 +54,7 @@ std::uint64_t CountOverlapsBruteAutovec(const BoxesView& b, const Box* queries,
   });
 }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

@@ -11,10 +11,7 @@
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 
-HWY_BEFORE_NAMESPACE();
-namespace simdphys::simd {
-namespace HWY_NAMESPACE {
-namespace hn = hwy::HWY_NAMESPACE;
+SIMDPHYS_TARGET_BEGIN();
 
 #include "core/sweep-inl.hpp"
 
@@ -49,9 +46,7 @@ void SweepCell(const simd::SweepCell& c, std::vector<Pair>& out) {
 
 void SweepCellAutovec(const simd::SweepCell& c, std::vector<Pair>& out) { sweepScalar(c, out); }
 
-}  // namespace HWY_NAMESPACE
-}  // namespace simdphys::simd
-HWY_AFTER_NAMESPACE();
+SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {

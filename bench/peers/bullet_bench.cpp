@@ -21,21 +21,12 @@
 
 #include "bench/bench_common.hpp"
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wall"
-#pragma GCC diagnostic ignored "-Wextra"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wshadow"
-#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
-#include <LinearMath/btAlignedAllocator.h>
-#pragma GCC diagnostic pop
+#include "bench/peers/bullet.hpp"
 
 namespace simdphys::bench {
 namespace {
 
 constexpr std::size_t kSizes[] = {100'000, 1'000'000};
-
-btVector3 toBullet(const Vec3f& v) { return btVector3(v.x(), v.y(), v.z()); }
 
 // A broadphase holding one proxy per box; a proxy's user pointer is its box index.
 class Dbvt {

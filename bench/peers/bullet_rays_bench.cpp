@@ -9,15 +9,7 @@
 
 #include "bench/rays_common.hpp"
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wall"
-#pragma GCC diagnostic ignored "-Wextra"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wshadow"
-#include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
-#include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
-#include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
-#pragma GCC diagnostic pop
+#include "bench/peers/bullet.hpp"
 
 namespace simdphys::bench {
 namespace {
@@ -81,10 +73,8 @@ void registerBulletRays() {
 #pragma omp parallel for schedule(dynamic, 256)
                      for (std::int64_t j = 0; j < std::int64_t(set.rays.size()); ++j) {
                        const Ray r = set.rays[std::size_t(j)];
-                       const btVector3 from(r.origin.x(), r.origin.y(), r.origin.z());
-                       const btVector3 to =
-                           from +
-                           kLength * btVector3(r.direction.x(), r.direction.y(), r.direction.z());
+                       const btVector3 from = toBullet(r.origin);
+                       const btVector3 to = from + kLength * toBullet(r.direction);
                        ClosestTriangle callback(from, to);
                        shape.performRaycast(&callback, from, to);
                        hits[std::size_t(j)] = callback.hit();

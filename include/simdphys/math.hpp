@@ -14,17 +14,11 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <concepts>
-#include <initializer_list>
 #include <limits>
 #include <numbers>
-#include <sstream>
-#include <string>
-#include <string_view>
 #include <type_traits>
-#include <utility>
 
 #include "simdphys/core.hpp"
 
@@ -81,82 +75,6 @@ inline constexpr T kGeometryTolerance = T(16) * std::numeric_limits<T>::epsilon(
 inline constexpr float kMaxCoordinate = 1e18f;
 inline constexpr float kMinScale = 1e-18f;
 
-namespace detail {
-
-// Whether a magnitude is in the supported range. The range is a float range: a double is compared
-// after rounding to float, so the double 1e18 is in it too. False for NaN.
-inline bool inSupportedRange(double magnitude) {
-  return magnitude <= std::numeric_limits<float>::max() && float(magnitude) <= kMaxCoordinate;
-}
-
-// x as the shortest text that reads back as the same float (the range is a float range; a double
-// beyond float's range as the shortest double), so a value one ulp past the edge does not print
-// as the edge: 1e+20, 1.00000008e+18.
-inline std::string rangeText(double x) {
-  char text[32];
-  const float f = float(x);
-  const auto end = std::isfinite(f) || !std::isfinite(x) ? std::to_chars(text, text + 32, f).ptr
-                                                         : std::to_chars(text, text + 32, x).ptr;
-  return std::string(text, end);
-}
-
-// Throws Error unless |x| is in the supported range: "where: field is 1e+20, outside the
-// supported range +-1e+18" (or "..., not finite").
-template <std::floating_point T>
-void requireInRange(T x, std::string_view where, std::string_view field) {
-  if (inSupportedRange(std::abs(double(x)))) return;
-  throw Error(std::string(where) + ": " + std::string(field) + " is " + rangeText(double(x)) +
-              (std::isfinite(x) ? ", outside the supported range +-" + rangeText(kMaxCoordinate)
-                                : ", not finite"));
-}
-
-// Throws Error unless the shape center +- reach (reach >= 0 per axis: a radius, a box's extent
-// along the axis) lies in the supported range on every axis, so that its bounds are in range
-// too: for float input, float(center + reach) <= kMaxCoordinate exactly when this passes (the sum
-// is taken in double, then rounded to float).
-template <class C, class R>
-void requireReachInRange(const C& center, const R& reach, std::string_view where,
-                         std::string_view what) {
-  constexpr char kAxis[] = {'x', 'y', 'z', 'w'};
-  for (int a = 0; a < int(center.size()); ++a) {
-    const double bound = std::abs(double(center[a])) + double(reach[a]);
-    if (inSupportedRange(bound)) continue;
-    throw Error(std::string(where) + ": " + std::string(what) + " reaches " + rangeText(bound) +
-                " on " + kAxis[a] + ", outside the supported range +-" + rangeText(kMaxCoordinate));
-  }
-}
-
-// v / |v| for any finite non-zero v, whatever its magnitude: v is divided by its largest
-// |component| first, so |v|^2 neither overflows nor underflows. `fallback` when v is zero or not
-// finite. The library's one way to normalise a direction it is given.
-template <class D>
-Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, 1> unitOr(
-    const Eigen::MatrixBase<D>& v,
-    const Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, 1>& fallback) {
-  using T = typename D::Scalar;
-  const T m = v.cwiseAbs().maxCoeff();
-  if (!(m > 0) || !std::isfinite(m)) return fallback;
-  const Eigen::Matrix<T, D::RowsAtCompileTime, 1> s = v / m;
-  return s / s.norm();
-}
-
-// The power of two 2^-e that brings m into [0.5, 1) (or as near as float's exponents allow for a
-// subnormal m); 1 for m = 0 or not finite. Multiplying by it is exact (barring subnormal
-// results), so a computation on rescaled values gives the bits of the unscaled one wherever that
-// one does not overflow or underflow: the way to compute products of lengths (|n|^2 ~ L^4,
-// volumes ~ L^3) at any scale in the supported range.
-template <std::floating_point T>
-T inversePowerOfTwo(T m) {
-  if (!(m > 0) || !std::isfinite(m)) return T(1);
-  int e = 0;
-  (void)std::frexp(m, &e);
-  // Clamped so that 2^-e and 2^e are normal numbers.
-  return std::ldexp(T(1), -std::clamp(e, std::numeric_limits<T>::min_exponent,
-                                      std::numeric_limits<T>::max_exponent - 2));
-}
-
-}  // namespace detail
-
 // A world-space ray through a pixel (see screenToRay).
 template <class T>
 struct ScreenRay {
@@ -174,73 +92,6 @@ using NoDeduce = std::type_identity_t<T>;
 template <class D>
 using ColumnOf = Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, 1>;
 
-template <class T>
-std::string str(T x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
-
-[[noreturn]] inline void fail(const char* fn, const std::string& what) {
-  throw Error(std::string(fn) + ": " + what);
-}
-
-template <std::floating_point T>
-void requireFinite(T x, const char* fn, const char* name) {
-  if (!std::isfinite(x)) fail(fn, std::string(name) + " is not finite (" + str(x) + ")");
-}
-
-template <class D>
-void requireFinite(const Eigen::MatrixBase<D>& v, const char* fn, const char* name) {
-  if (!v.allFinite()) fail(fn, std::string(name) + " has a non-finite component");
-}
-
-// Divides by the largest |component|: the result has the same direction and norm in [1, sqrt(n)],
-// so its dot products and norms neither underflow nor overflow, whatever the magnitude of v.
-template <class D>
-ColumnOf<D> rescaled(const Eigen::MatrixBase<D>& v, const char* fn, const char* name) {
-  static_assert(D::ColsAtCompileTime == 1, "a column vector is expected");
-  static_assert(std::is_floating_point_v<typename D::Scalar>, "float or double expected");
-  requireFinite(v, fn, name);
-  const typename D::Scalar m = v.cwiseAbs().maxCoeff();
-  if (m == 0) fail(fn, std::string(name) + " is the zero vector");
-  return v / m;
-}
-
-template <class D>
-ColumnOf<D> normalized(const Eigen::MatrixBase<D>& v, const char* fn, const char* name) {
-  const ColumnOf<D> s = rescaled(v, fn, name);
-  return s / s.norm();
-}
-
-// A view or projection matrix must come out finite, and the entries that make it invertible
-// non-zero: parameters in range can still overflow or underflow one (aspect 1e-40 gives
-// f / aspect = inf, an extent of 1e-40 an inverse that overflows).
-template <class T>
-bool usableMatrix(const Mat4<T>& m, std::initializer_list<std::pair<int, int>> nonZero) {
-  bool ok = m.allFinite();
-  for (const auto& [row, col] : nonZero) ok = ok && m(row, col) != 0;
-  return ok;
-}
-inline constexpr char kUnusable[] =
-    ": the matrix would have a non-finite or vanishing entry (a parameter too large or too small "
-    "for the scalar type)";
-
-template <class T>
-void requireViewport(const Vec4<T>& viewport, const char* fn) {
-  requireFinite(viewport, fn, "viewport");
-  if (!(viewport[2] > 0 && viewport[3] > 0))
-    fail(fn, "viewport width and height must be positive, got " + str(viewport[2]) + " x " +
-                 str(viewport[3]));
-}
-
-template <class DA, class DB>
-ColumnOf<DA> project(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& onto,
-                     const char* fn) {
-  const ColumnOf<DB> d = rescaled(onto, fn, "onto");
-  return d * (a.dot(d) / d.squaredNorm());
-}
-
 // A fixed-size square matrix of 2x2 to 4x4, as the minor and cofactor functions take.
 template <class D>
 using SquareOf = Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, D::ColsAtCompileTime>;
@@ -252,45 +103,19 @@ constexpr void requireSquare2To4() {
                 "a fixed-size 2x2, 3x3 or 4x4 matrix is expected");
 }
 
-template <int N>
-void requireIndex(Eigen::Index row, Eigen::Index col, const char* fn) {
-  if (row < 0 || row >= N || col < 0 || col >= N)
-    fail(fn, "(row " + str(row) + ", col " + str(col) + ") is outside a " + str(N) + "x" + str(N) +
-                 " matrix");
-}
-
-// Determinant of m without row r and column c; r and c are already checked. The submatrix is at
-// most 3x3, whose determinant Eigen writes out in closed form (no pivoting, no division), so
-// the result is a plain polynomial in the entries and exact for small integers.
-template <class T, int N>
-T minorUnchecked(const Eigen::Matrix<T, N, N>& m, Eigen::Index r, Eigen::Index c) {
-  if constexpr (N == 2) {
-    return m(1 - r, 1 - c);
-  } else {
-    Eigen::Matrix<T, N - 1, N - 1> sub;
-    for (Eigen::Index i = 0, si = 0; i < N; ++i) {
-      if (i == r) continue;
-      for (Eigen::Index j = 0, sj = 0; j < N; ++j) {
-        if (j == c) continue;
-        sub(si, sj++) = m(i, j);
-      }
-      ++si;
-    }
-    return sub.determinant();
-  }
-}
-
-template <class T, int N>
-T cofactorUnchecked(const Eigen::Matrix<T, N, N>& m, Eigen::Index r, Eigen::Index c) {
-  const T mi = minorUnchecked(m, r, c);
-  return (r + c) % 2 == 0 ? mi : -mi;
-}
-
 // The bodies of the functions below that take Eigen expressions: each function converts its
 // arguments to plain vectors and matrices and calls one of these, compiled once for float and
 // double (src/reference/math.cpp).
+template <class T, int N>
+T matrixMinor(const Eigen::Matrix<T, N, N>& m, Eigen::Index row, Eigen::Index col);
+template <class T, int N>
+T cofactor(const Eigen::Matrix<T, N, N>& m, Eigen::Index row, Eigen::Index col);
+template <class T, int N>
+Eigen::Matrix<T, N, N> cofactorMatrix(const Eigen::Matrix<T, N, N>& m);
 template <std::floating_point T>
 Vec3<T> matrixToEuler(const Mat3<T>& r);
+template <std::floating_point T>
+Mat3<T> axisAngle(const Vec3<T>& axis, T angle);
 template <std::floating_point T>
 Mat4<T> transform(const Vec3<T>& s, const Mat3<T>& r, const Vec3<T>& t);
 template <std::floating_point T>
@@ -306,6 +131,15 @@ Vec3<T> unproject(const Vec3<T>& w, const Vec4<T>& vp, const Mat4<T>& inv);
 template <std::floating_point T>
 ScreenRay<T> screenToRay(T px, T py, const Vec4<T>& viewport, const Mat4<T>& view,
                          const Mat4<T>& projection);
+// `fn` names the caller in the Error thrown for a zero or non-finite `onto`.
+template <class T, int N>
+Eigen::Matrix<T, N, 1> project(const Eigen::Matrix<T, N, 1>& a, const Eigen::Matrix<T, N, 1>& onto,
+                               const char* fn);
+template <class T, int N>
+Eigen::Matrix<T, N, 1> reflect(const Eigen::Matrix<T, N, 1>& v,
+                               const Eigen::Matrix<T, N, 1>& normal);
+template <class T, int N>
+T angleBetween(const Eigen::Matrix<T, N, 1>& a, const Eigen::Matrix<T, N, 1>& b);
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
@@ -321,8 +155,7 @@ ScreenRay<T> screenToRay(T px, T py, const Vec4<T>& viewport, const Mat4<T>& vie
 template <class D>
 typename D::Scalar matrixMinor(const Eigen::MatrixBase<D>& m, Eigen::Index row, Eigen::Index col) {
   detail::requireSquare2To4<D>();
-  detail::requireIndex<D::RowsAtCompileTime>(row, col, "matrixMinor");
-  return detail::minorUnchecked(detail::SquareOf<D>(m), row, col);
+  return detail::matrixMinor(detail::SquareOf<D>(m), row, col);
 }
 
 // (-1)^(row + col) times the minor: the factor of m(row, col) in the Laplace expansion of the
@@ -330,19 +163,14 @@ typename D::Scalar matrixMinor(const Eigen::MatrixBase<D>& m, Eigen::Index row, 
 template <class D>
 typename D::Scalar cofactor(const Eigen::MatrixBase<D>& m, Eigen::Index row, Eigen::Index col) {
   detail::requireSquare2To4<D>();
-  detail::requireIndex<D::RowsAtCompileTime>(row, col, "cofactor");
-  return detail::cofactorUnchecked(detail::SquareOf<D>(m), row, col);
+  return detail::cofactor(detail::SquareOf<D>(m), row, col);
 }
 
 // The matrix of all cofactors: element (i, j) is cofactor(m, i, j).
 template <class D>
 detail::SquareOf<D> cofactorMatrix(const Eigen::MatrixBase<D>& m) {
   detail::requireSquare2To4<D>();
-  const detail::SquareOf<D> a = m;
-  detail::SquareOf<D> c;
-  for (Eigen::Index i = 0; i < a.rows(); ++i)
-    for (Eigen::Index j = 0; j < a.cols(); ++j) c(i, j) = detail::cofactorUnchecked(a, i, j);
-  return c;
+  return detail::cofactorMatrix(detail::SquareOf<D>(m));
 }
 
 // The transpose of the cofactor matrix: adjugate(m) * m == m * adjugate(m) == det(m) * I, so
@@ -385,13 +213,7 @@ Vec3<typename D::Scalar> matrixToEuler(const Eigen::MatrixBase<D>& rotation) {
 template <class D>
 Mat3<typename D::Scalar> axisAngle(const Eigen::MatrixBase<D>& axis, typename D::Scalar angle) {
   using T = typename D::Scalar;
-  const Vec3<T> k = detail::normalized(axis, "axisAngle", "axis");
-  detail::requireFinite(angle, "axisAngle", "angle");
-  const T c = std::cos(angle), s = std::sin(angle);
-  Mat3<T> cross;  // cross * v == k x v
-  cross << 0, -k.z(), k.y(), k.z(), 0, -k.x(), -k.y(), k.x(), 0;
-  // Rodrigues: keeps the part along k, turns the perpendicular part by angle.
-  return c * Mat3<T>::Identity() + s * cross + (1 - c) * k * k.transpose();
+  return detail::axisAngle<T>(axis, angle);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -501,21 +323,20 @@ ScreenRay<typename DV::Scalar> screenToRay(typename DV::Scalar px, typename DV::
 // The part of a along onto.
 template <class DA, class DB>
 detail::ColumnOf<DA> project(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& onto) {
-  return detail::project(a, onto, "project");
+  return detail::project<typename DA::Scalar, DA::RowsAtCompileTime>(a, onto, "project");
 }
 
 // The part of a perpendicular to onto: project(a, onto) + reject(a, onto) == a.
 template <class DA, class DB>
 detail::ColumnOf<DA> reject(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& onto) {
-  return a - detail::project(a, onto, "reject");
+  return a - detail::project<typename DA::Scalar, DA::RowsAtCompileTime>(a, onto, "reject");
 }
 
 // v mirrored in the plane (line in 2D) with the given normal; the normal need not be unit length
 // (the book's Reflection assumes it is).
 template <class DV, class DN>
 detail::ColumnOf<DV> reflect(const Eigen::MatrixBase<DV>& v, const Eigen::MatrixBase<DN>& normal) {
-  const detail::ColumnOf<DN> n = detail::rescaled(normal, "reflect", "normal");
-  return v - (2 * v.dot(n) / n.squaredNorm()) * n;
+  return detail::reflect<typename DV::Scalar, DV::RowsAtCompileTime>(v, normal);
 }
 
 // Unsigned angle in [0, pi] between a and b, as atan2(|a x b|, a . b): accurate to a few ulp
@@ -524,13 +345,7 @@ detail::ColumnOf<DV> reflect(const Eigen::MatrixBase<DV>& v, const Eigen::Matrix
 template <class DA, class DB>
 typename DA::Scalar angleBetween(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b) {
   static_assert(DA::SizeAtCompileTime == 2 || DA::SizeAtCompileTime == 3, "2D or 3D vectors");
-  const detail::ColumnOf<DA> ua = detail::rescaled(a, "angleBetween", "a");
-  const detail::ColumnOf<DB> ub = detail::rescaled(b, "angleBetween", "b");
-  if constexpr (DA::SizeAtCompileTime == 3) {
-    return std::atan2(ua.cross(ub).norm(), ua.dot(ub));
-  } else {
-    return std::atan2(std::abs(ua.x() * ub.y() - ua.y() * ub.x()), ua.dot(ub));
-  }
+  return detail::angleBetween<typename DA::Scalar, DA::SizeAtCompileTime>(a, b);
 }
 
 // Tolerant comparison: |a - b| <= max(absTol, relTol * max(|a|, |b|)). The defaults (epsilon for

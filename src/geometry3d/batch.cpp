@@ -8,6 +8,7 @@
 // The reference path calls these per element: their definitions, so that they inline.
 #include "src/reference/geometry3d/intersect-inl.hpp"
 #include "src/reference/geometry3d/raycast-inl.hpp"
+#include "src/reference/validate-inl.hpp"
 #include "src/views.hpp"
 
 namespace simdphys {

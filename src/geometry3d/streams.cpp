@@ -1,6 +1,7 @@
 #include "simdphys/geometry3d/streams.hpp"
 
 #include "simdphys/geometry3d/raycast.hpp"
+#include "src/reference/validate-inl.hpp"
 
 namespace simdphys {
 using detail::at;

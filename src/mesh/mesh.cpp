@@ -6,6 +6,7 @@
 
 #include "simdphys/geometry3d/raycast.hpp"  // triangleNormalWide: the raycast's degeneracy test
 #include "simdphys/mesh.hpp"
+#include "src/reference/validate-inl.hpp"
 
 namespace simdphys {
 

@@ -15,6 +15,7 @@
 // Overlap and linetest queries call these per triangle: their definitions, so that they inline.
 #include "src/reference/geometry3d/intersect-inl.hpp"
 #include "src/reference/geometry3d/raycast-inl.hpp"
+#include "src/reference/validate-inl.hpp"
 
 namespace simdphys {
 

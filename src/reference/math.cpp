@@ -16,6 +16,7 @@ namespace simdphys {
   template bool nearlyEqual(T a, detail::NoDeduce<T> b, detail::NoDeduce<T> relTol,            \
                             detail::NoDeduce<T> absTol);                                       \
   template Vec3<T> detail::matrixToEuler(const Mat3<T>& r);                                    \
+  template Mat3<T> detail::axisAngle(const Vec3<T>& axis, T angle);                            \
   template Mat4<T> detail::transform(const Vec3<T>& s, const Mat3<T>& r, const Vec3<T>& t);    \
   template Mat4<T> detail::transform(const Vec3<T>& scale, const Quat<T>& q,                   \
                                      const Vec3<T>& translation);                              \
@@ -28,5 +29,30 @@ namespace simdphys {
 SIMDPHYS_INSTANTIATE_MATH(float)
 SIMDPHYS_INSTANTIATE_MATH(double)
 #undef SIMDPHYS_INSTANTIATE_MATH
+
+// The square matrices (2x2 to 4x4) and vectors (2D, 3D) of each scalar.
+#define SIMDPHYS_INSTANTIATE_MATH_MATRIX(T, N)                                      \
+  template T detail::matrixMinor(const Eigen::Matrix<T, N, N>& m, Eigen::Index row, \
+                                 Eigen::Index col);                                 \
+  template T detail::cofactor(const Eigen::Matrix<T, N, N>& m, Eigen::Index row,    \
+                              Eigen::Index col);                                    \
+  template Eigen::Matrix<T, N, N> detail::cofactorMatrix(const Eigen::Matrix<T, N, N>& m);
+#define SIMDPHYS_INSTANTIATE_MATH_VECTOR(T, N)                                              \
+  template Eigen::Matrix<T, N, 1> detail::project(                                          \
+      const Eigen::Matrix<T, N, 1>& a, const Eigen::Matrix<T, N, 1>& onto, const char* fn); \
+  template Eigen::Matrix<T, N, 1> detail::reflect(const Eigen::Matrix<T, N, 1>& v,          \
+                                                  const Eigen::Matrix<T, N, 1>& normal);    \
+  template T detail::angleBetween(const Eigen::Matrix<T, N, 1>& a, const Eigen::Matrix<T, N, 1>& b);
+#define SIMDPHYS_INSTANTIATE_MATH_SIZES(T) \
+  SIMDPHYS_INSTANTIATE_MATH_MATRIX(T, 2)   \
+  SIMDPHYS_INSTANTIATE_MATH_MATRIX(T, 3)   \
+  SIMDPHYS_INSTANTIATE_MATH_MATRIX(T, 4)   \
+  SIMDPHYS_INSTANTIATE_MATH_VECTOR(T, 2)   \
+  SIMDPHYS_INSTANTIATE_MATH_VECTOR(T, 3)
+SIMDPHYS_INSTANTIATE_MATH_SIZES(float)
+SIMDPHYS_INSTANTIATE_MATH_SIZES(double)
+#undef SIMDPHYS_INSTANTIATE_MATH_SIZES
+#undef SIMDPHYS_INSTANTIATE_MATH_VECTOR
+#undef SIMDPHYS_INSTANTIATE_MATH_MATRIX
 
 }  // namespace simdphys

@@ -1,5 +1,6 @@
 // Cameras: perspective, orthographic, orbit; the frustum and picking ray they imply.
 #include "simdphys/scene/camera.hpp"
+#include "src/reference/math-inl.hpp"
 
 #include <algorithm>
 #include <cmath>

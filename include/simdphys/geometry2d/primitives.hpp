@@ -24,11 +24,7 @@
 
 #include <array>
 #include <cmath>
-#include <limits>
-#include <sstream>
-#include <string>
 #include <string_view>
-#include <vector>
 
 #include "simdphys/core.hpp"
 #include "simdphys/math.hpp"
@@ -159,99 +155,24 @@ RectT<T> boundingRect(const Segment2T<T>& s) {
 }
 
 // ---- validation ------------------------------------------------------------------------------
-
-namespace detail::g2 {
-// Each coordinate finite and in the supported range (math.hpp): "where: field.x is 1e+20,
-// outside the supported range +-1e+18".
-template <class T>
-void requireInRange(const Vec2<T>& v, std::string_view where, const char* field) {
-  for (int a = 0; a < 2; ++a)  // the field's name is built only for the message
-    if (!detail::inSupportedRange(std::abs(double(v[a]))))
-      detail::requireInRange(v[a], where, std::string(field) + (a == 0 ? ".x" : ".y"));
-}
-template <class T>
-void requireFinite(T x, std::string_view where, const char* field) {
-  if (std::isfinite(x)) return;
-  std::ostringstream msg;
-  msg << where << ": " << field << " is " << x << ", not finite";
-  throw Error(msg.str());
-}
-template <class T>
-void requireNonNegative(T x, std::string_view where, const char* field) {
-  if (x >= 0) return;
-  std::ostringstream msg;
-  msg << where << ": " << field << " is " << x << ", must be >= 0";
-  throw Error(msg.str());
-}
-// "Unit length": a few rounding steps of a normalisation in T (as the 3D rays).
-template <class T>
-constexpr T kUnitTolerance = T(64) * std::numeric_limits<T>::epsilon();
-}  // namespace detail::g2
+// Each throws Error saying what is wrong and where (compiled for float and double in
+// src/reference/geometry2d/primitives.cpp). Coordinates must be in the supported range (math.hpp).
 
 template <class T>
-void validate(const Vec2<T>& point, std::string_view where) {
-  detail::g2::requireInRange(point, where, "point");
-}
-
+void validate(const Vec2<T>& point, std::string_view where);
 template <class T>
-void validate(const Segment2T<T>& s, std::string_view where) {
-  detail::g2::requireInRange(s.start, where, "start");
-  detail::g2::requireInRange(s.end, where, "end");
-}
-
+void validate(const Segment2T<T>& s, std::string_view where);
+// direction of unit length (within 64 eps).
 template <class T>
-void validate(const Ray2T<T>& r, std::string_view where) {
-  detail::g2::requireInRange(r.origin, where, "origin");
-  detail::g2::requireInRange(r.direction, where, "direction");
-  const T length = r.direction.norm();
-  if (std::abs(length - T(1)) > detail::g2::kUnitTolerance<T>) {
-    std::ostringstream msg;
-    msg << where << ": direction is not unit length (|d| = " << length << ")";
-    throw Error(msg.str());
-  }
-}
-
+void validate(const Ray2T<T>& r, std::string_view where);
+// radius finite and >= 0, center +- radius in range.
 template <class T>
-void validate(const CircleT<T>& c, std::string_view where) {
-  detail::g2::requireInRange(c.center, where, "center");
-  detail::g2::requireFinite(c.radius, where, "radius");
-  detail::g2::requireNonNegative(c.radius, where, "radius");
-  detail::requireReachInRange(c.center, Vec2<T>::Constant(c.radius), where, "center +- radius");
-}
-
+void validate(const CircleT<T>& c, std::string_view where);
+// min <= max on both axes.
 template <class T>
-void validate(const RectT<T>& r, std::string_view where) {
-  detail::g2::requireInRange(r.min, where, "min");
-  detail::g2::requireInRange(r.max, where, "max");
-  for (int a = 0; a < 2; ++a) {
-    if (r.min[a] <= r.max[a]) continue;
-    const char axis = a == 0 ? 'x' : 'y';
-    std::ostringstream msg;
-    msg << where << ": min." << axis << " (" << r.min[a] << ") > max." << axis << " (" << r.max[a]
-        << ")";
-    throw Error(msg.str());
-  }
-}
-
+void validate(const RectT<T>& r, std::string_view where);
+// rotation finite, halfExtents >= 0, center +- |axes| halfExtents in range.
 template <class T>
-void validate(const OrientedRectT<T>& b, std::string_view where) {
-  detail::g2::requireInRange(b.center, where, "center");
-  detail::g2::requireInRange(b.halfExtents, where, "halfExtents");
-  detail::g2::requireFinite(b.rotation, where, "rotation");
-  detail::g2::requireNonNegative(b.halfExtents.x(), where, "halfExtents.x");
-  detail::g2::requireNonNegative(b.halfExtents.y(), where, "halfExtents.y");
-  detail::requireReachInRange(b.center, Vec2<T>(b.axes().cwiseAbs() * b.halfExtents), where,
-                              "the rectangle (center +- |axes| halfExtents)");
-}
-
-// Any finite non-zero offset works: unitOr (math.hpp) scales it before taking its length.
-template <class T>
-Ray2T<T> Ray2T<T>::fromTo(const Vec2<T>& origin, const Vec2<T>& target) {
-  detail::g2::requireInRange(origin, "Ray2::fromTo", "origin");
-  detail::g2::requireInRange(target, "Ray2::fromTo", "target");
-  const Vec2<T> d = target - origin;
-  if ((d.array() == 0).all()) throw Error("Ray2::fromTo: origin and target coincide");
-  return {origin, detail::unitOr(d, Vec2<T>::Zero().eval())};
-}
+void validate(const OrientedRectT<T>& b, std::string_view where);
 
 }  // namespace simdphys

@@ -56,6 +56,10 @@ template <class T>
 EpaCoreResult<T> epaCore(const CorePair<T>& cores, const Vec3<T>& origin, const GjkRun<T>& run,
                          const Vec3<T>& towardB);
 
+// epa on the cores, compiled once per scalar (src/reference/geometry3d/epa.cpp).
+template <class T>
+std::optional<PenetrationT<T>> epa(const Cores<T>& shapes);
+
 }  // namespace detail
 
 // Penetration of two intersecting convex shapes (std::nullopt exactly when gjkIntersect is
@@ -67,29 +71,7 @@ EpaCoreResult<T> epaCore(const CorePair<T>& cores, const Vec3<T>& origin, const 
 // between the shapes' reference points, or +x if they coincide.
 template <class A, class B>
 std::optional<PenetrationT<ShapeScalarT<A>>> epa(const A& a, const B& b) {
-  using T = ShapeScalarT<A>;
-  const detail::GjkSolution<T> g = detail::solveGjk(a, b);
-  if (!g.touching()) return std::nullopt;
-  const detail::GjkRun<T>& run = g.run;
-  const T ra = g.ra, rb = g.rb, core = g.core;
-  const Vec3<T>& origin = g.origin;
-  PenetrationT<T> result;
-  if (!run.overlap) {
-    result.normal = -g.fromBToA();
-    result.depth = std::max(T(0), ra + rb - core);
-    result.pointA = g.pointA() + ra * result.normal + origin;
-    result.pointB = g.pointB() - rb * result.normal + origin;
-    return result;
-  }
-  // EPA runs in GJK's scaled coordinates (GjkRun::unit); its lengths are unscaled here.
-  const detail::EpaCoreResult<T> e =
-      detail::epaCore(detail::corePair<T>(a, b), origin, run, g.towardB);
-  result.normal = e.normal;
-  result.depth = e.depth / run.unit + ra + rb;
-  result.pointA = e.pointA / run.unit + ra * e.normal + origin;
-  result.pointB = e.pointB / run.unit - rb * e.normal + origin;
-  result.iterations = e.iterations;
-  return result;
+  return detail::epa(detail::coresOf(a, b));
 }
 
 }  // namespace simdphys

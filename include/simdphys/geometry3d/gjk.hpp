@@ -169,34 +169,23 @@ constexpr void requireSameScalar() {
   static_assert(std::is_floating_point_v<ShapeScalarT<A>>, "float or double expected");
 }
 
-// GJK from the shapes' reference points, with what both gjkDistance and epa read of it.
+// Two shapes as GJK and EPA see them: their cores, reference points and radii.
 template <class T>
-struct GjkSolution {
-  Vec3<T> origin, towardB;  // a point of A (the local origin); B's reference point from it
-  GjkRun<T> run;
-  T ra = 0, rb = 0;  // the radii around the cores
-  T core = 0;        // the cores' distance (0 when they overlap), unscaled
-  T size = 0;        // run.scale unscaled
-  // The shapes are within the touching tolerance of each other, or overlap.
-  bool touching() const { return core - ra - rb <= kTouchTolerance<T> * (size + ra + rb); }
-  // The cores' closest points in local coordinates (unscaled), and the unit vector from B's to A's.
-  Vec3<T> pointA() const { return run.pointA() / run.unit; }
-  Vec3<T> pointB() const { return run.pointB() / run.unit; }
-  Vec3<T> fromBToA() const { return run.v / std::sqrt(run.vv); }
+struct Cores {
+  CorePair<T> pair;
+  Vec3<T> referenceA, referenceB;
+  T ra, rb;
 };
 template <class A, class B>
-GjkSolution<ShapeScalarT<A>> solveGjk(const A& a, const B& b) {
+Cores<ShapeScalarT<A>> coresOf(const A& a, const B& b) {
   requireSameScalar<A, B>();
   using T = ShapeScalarT<A>;
-  GjkSolution<T> g;
-  g.origin = referencePoint(a);
-  g.towardB = referencePoint(b) - g.origin;
-  g.run = runGjk(corePair<T>(a, b), g.origin, g.towardB);
-  g.ra = coreRadius(a), g.rb = coreRadius(b);
-  g.core = g.run.overlap ? T(0) : std::sqrt(g.run.vv) / g.run.unit;
-  g.size = g.run.scale / g.run.unit;
-  return g;
+  return {corePair<T>(a, b), referencePoint(a), referencePoint(b), coreRadius(a), coreRadius(b)};
 }
+
+// gjkDistance on the cores, compiled once per scalar (src/reference/geometry3d/gjk.cpp).
+template <class T>
+GjkResultT<T> gjkDistance(const Cores<T>& shapes);
 
 }  // namespace detail
 
@@ -206,34 +195,7 @@ GjkSolution<ShapeScalarT<A>> solveGjk(const A& a, const B& b) {
 // distance 0 and a common point.
 template <class A, class B>
 GjkResultT<ShapeScalarT<A>> gjkDistance(const A& a, const B& b) {
-  using T = ShapeScalarT<A>;
-  const detail::GjkSolution<T> g = detail::solveGjk(a, b);
-  const detail::GjkRun<T>& run = g.run;
-  const T ra = g.ra, rb = g.rb, core = g.core;
-  const Vec3<T>& origin = g.origin;
-  const Vec3<T> ca = g.pointA(), cb = g.pointB();
-  GjkResultT<T> result;
-  result.iterations = run.iterations;
-  const T distance = core - ra - rb;
-  if (g.touching()) {
-    result.intersecting = true;
-    result.distance = 0;
-    // A common point: where the cores meet, or on the segment between the cores' closest
-    // points, at a distance t from B's within rb and from A's within ra (the middle of
-    // [core - ra, rb] clipped to the segment).
-    Vec3<T> p = (ca + cb) / T(2);
-    if (!run.overlap) {
-      const T lo = std::max(T(0), core - ra), hi = std::min(core, rb);
-      p = cb + (ca - cb) * (std::min(std::max((lo + hi) / 2, T(0)), core) / core);
-    }
-    result.pointA = result.pointB = p + origin;
-    return result;
-  }
-  const Vec3<T> n = g.fromBToA();
-  result.distance = distance;
-  result.pointA = ca - ra * n + origin;
-  result.pointB = cb + rb * n + origin;
-  return result;
+  return detail::gjkDistance(detail::coresOf(a, b));
 }
 
 // Whether two convex shapes intersect (touching counts): exactly gjkDistance(a, b).intersecting.

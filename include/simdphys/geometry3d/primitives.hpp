@@ -8,10 +8,6 @@
 // `validate` where the data enters.
 #pragma once
 
-#include <cmath>
-#include <limits>
-#include <sstream>
-#include <string>
 #include <string_view>
 
 #include "simdphys/core.hpp"
@@ -128,122 +124,28 @@ RayT<U> cast(const RayT<T>& r) {
 }
 
 // ---- validation ------------------------------------------------------------------------------
+// Each throws Error saying what is wrong and where (compiled for float and double in
+// src/reference/geometry3d/primitives.cpp).
 
-namespace detail {
-// Each component finite and within the supported range (math.hpp), e.g. "where: min.y is 1e+20,
-// outside the supported range +-1e+18".
-template <class V>
-void requireFiniteField(const V& v, std::string_view where, const char* field) {
-  constexpr char kAxis[] = {'x', 'y', 'z', 'w'};
-  for (int a = 0; a < int(v.size()); ++a)  // the field's name is built only for the message
-    if (!inSupportedRange(std::abs(double(v[a]))))
-      requireInRange(v[a], where, std::string(field) + '.' + kAxis[a]);
-}
+// min <= max on every axis.
 template <class T>
-void requireFiniteScalar(T x, std::string_view where, const char* field) {
-  requireInRange(x, where, field);
-}
-// Tolerance for "unit length" and "orthonormal": a few rounding steps of a normalisation in T.
+void validate(const AabbT<T>& box, std::string_view where);
+// radius finite and >= 0, center +- radius in range.
 template <class T>
-constexpr T kUnitTolerance = T(64) * std::numeric_limits<T>::epsilon();
-}  // namespace detail
-
+void validate(const SphereT<T>& sphere, std::string_view where);
 template <class T>
-void validate(const AabbT<T>& box, std::string_view where) {
-  detail::requireFiniteField(box.min, where, "min");
-  detail::requireFiniteField(box.max, where, "max");
-  constexpr char kAxis[] = {'x', 'y', 'z'};
-  for (int a = 0; a < 3; ++a) {
-    if (box.min[a] <= box.max[a]) continue;
-    std::ostringstream msg;
-    msg << where << ": min." << kAxis[a] << " (" << box.min[a] << ") > max." << kAxis[a] << " ("
-        << box.max[a] << ")";
-    throw Error(msg.str());
-  }
-}
-
+void validate(const SegmentT<T>& s, std::string_view where);
+// direction of unit length (within 64 eps).
 template <class T>
-void validate(const SphereT<T>& sphere, std::string_view where) {
-  detail::requireFiniteField(sphere.center, where, "center");
-  if (!(std::isfinite(sphere.radius) && sphere.radius >= 0)) {
-    std::ostringstream msg;
-    msg << where << ": radius is " << sphere.radius << ", must be finite and >= 0";
-    throw Error(msg.str());
-  }
-  detail::requireReachInRange(sphere.center, Vec3<T>::Constant(sphere.radius), where,
-                              "center +- radius");
-}
-
+void validate(const RayT<T>& r, std::string_view where);
+// normal of unit length (within 64 eps).
 template <class T>
-void validate(const SegmentT<T>& s, std::string_view where) {
-  detail::requireFiniteField(s.start, where, "start");
-  detail::requireFiniteField(s.end, where, "end");
-}
-
+void validate(const PlaneT<T>& p, std::string_view where);
+// halfExtents >= 0, axes orthonormal and right-handed, center +- |axes| halfExtents in range.
 template <class T>
-void validate(const RayT<T>& r, std::string_view where) {
-  detail::requireFiniteField(r.origin, where, "origin");
-  detail::requireFiniteField(r.direction, where, "direction");
-  if (std::abs(r.direction.norm() - T(1)) > detail::kUnitTolerance<T>)
-    throw Error(std::string(where) + ": direction is not unit length (|d| = " +
-                std::to_string(double(r.direction.norm())) + ")");
-}
-
+void validate(const ObbT<T>& b, std::string_view where);
 template <class T>
-void validate(const PlaneT<T>& p, std::string_view where) {
-  detail::requireFiniteField(p.normal, where, "normal");
-  detail::requireFiniteScalar(p.d, where, "d");
-  if (std::abs(p.normal.norm() - T(1)) > detail::kUnitTolerance<T>)
-    throw Error(std::string(where) + ": normal is not unit length (|n| = " +
-                std::to_string(double(p.normal.norm())) + ")");
-}
-
-template <class T>
-void validate(const ObbT<T>& b, std::string_view where) {
-  detail::requireFiniteField(b.center, where, "center");
-  detail::requireFiniteField(b.halfExtents, where, "halfExtents");
-  detail::requireFiniteField(b.axes.col(0), where, "axes.col(0)");
-  detail::requireFiniteField(b.axes.col(1), where, "axes.col(1)");
-  detail::requireFiniteField(b.axes.col(2), where, "axes.col(2)");
-  for (int a = 0; a < 3; ++a)
-    if (!(b.halfExtents[a] >= 0))
-      throw Error(std::string(where) + ": halfExtents has a negative component");
-  const T error = (b.axes.transpose() * b.axes - Mat3<T>::Identity()).cwiseAbs().maxCoeff();
-  if (error > detail::kUnitTolerance<T> || b.axes.determinant() < 0)
-    throw Error(std::string(where) + ": axes are not orthonormal and right-handed (|A^T A - I| = " +
-                std::to_string(double(error)) + ")");
-  detail::requireReachInRange(b.center, Vec3<T>(b.axes.cwiseAbs() * b.halfExtents), where,
-                              "the box (center +- |axes| halfExtents)");
-}
-
-template <class T>
-void validate(const TriangleT<T>& t, std::string_view where) {
-  detail::requireFiniteField(t.a, where, "a");
-  detail::requireFiniteField(t.b, where, "b");
-  detail::requireFiniteField(t.c, where, "c");
-}
-
-// Both accept any finite non-zero offset or normal (unitOr scales it before taking its length)
-// and check that the points are in the supported range and the plane passes within it.
-template <class T>
-RayT<T> RayT<T>::fromTo(const Vec3<T>& origin, const Vec3<T>& target) {
-  detail::requireFiniteField(origin, "Ray::fromTo", "origin");
-  detail::requireFiniteField(target, "Ray::fromTo", "target");
-  const Vec3<T> d = target - origin;
-  if ((d.array() == 0).all()) throw Error("Ray::fromTo: origin and target coincide");
-  return {origin, detail::unitOr(d, Vec3<T>::Zero().eval())};
-}
-
-template <class T>
-PlaneT<T> PlaneT<T>::fromPointNormal(const Vec3<T>& point, const Vec3<T>& normal) {
-  detail::requireFiniteField(point, "Plane::fromPointNormal", "point");
-  if (!normal.allFinite()) throw Error("Plane::fromPointNormal: the normal is not finite");
-  if ((normal.array() == 0).all()) throw Error("Plane::fromPointNormal: the normal is zero");
-  const Vec3<T> n = detail::unitOr(normal, Vec3<T>::Zero().eval());
-  const PlaneT plane{n, -n.dot(point)};
-  validate(plane, "Plane::fromPointNormal");
-  return plane;
-}
+void validate(const TriangleT<T>& t, std::string_view where);
 
 // Closed overlap of two boxes: boxes that only touch overlap.
 template <class T>

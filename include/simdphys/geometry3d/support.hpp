@@ -93,15 +93,6 @@ using ShapeScalarT = typename ShapeScalar<std::remove_cvref_t<S>>::type;
 // shape: a sphere's centre, a box's corner selected by the sign bits (+ for 0), a triangle's or
 // segment's or hull's first vertex. Ties go to the first vertex.
 
-namespace detail {
-// direction / |direction| (math.hpp's unitOr: tiny and huge directions neither underflow nor
-// overflow); zero (or NaN) gives zero.
-template <class T>
-Vec3<T> unitOrZero(const Vec3<T>& d) {
-  return unitOr(d, Vec3<T>::Zero().eval());
-}
-}  // namespace detail
-
 template <class T>
 Vec3<T> support(const SphereT<T>& s, const detail::NoDeduce<Vec3<T>>& direction);
 

@@ -6,6 +6,8 @@
 #include "simdphys/geometry2d/containing.hpp"
 #include "src/reference/geometry2d/collisions-inl.hpp"
 #include "src/reference/geometry2d/line_tests-inl.hpp"
+#include "src/reference/math-inl.hpp"
+#include "src/reference/validate-inl.hpp"
 
 namespace simdphys {
 
@@ -17,7 +19,7 @@ void requirePoints(std::span<const Vec2<T>> points, const char* fn) {
   const auto inRange = [](T x) { return detail::inSupportedRange(std::abs(double(x))); };
   for (std::size_t i = 0; i < points.size(); ++i)  // the name is built only for the message
     if (!(inRange(points[i].x()) && inRange(points[i].y())))
-      requireInRange(points[i], fn, ("points[" + std::to_string(i) + "]").c_str());
+      requireFiniteField(points[i], fn, ("points[" + std::to_string(i) + "]").c_str());
 }
 
 // The circle with a and b on opposite ends of a diameter.

@@ -1,18 +1,16 @@
 // geometry2d/line_tests.hpp, compiled once: its function templates for float and double.
 #include "src/reference/geometry2d/line_tests-inl.hpp"
+#include "src/reference/instantiate.hpp"
 
 namespace simdphys {
 
-#define SIMDPHYS_INSTANTIATE_GEOMETRY2D_LINE_TESTS(T)                                    \
-  template bool intersects(const Segment2T<T>& s, const CircleT<T>& c);                  \
-  template bool intersects(const CircleT<T>& c, const Segment2T<T>& s);                  \
-  template bool intersects(const Segment2T<T>& s, const RectT<T>& r);                    \
-  template bool intersects(const RectT<T>& r, const Segment2T<T>& s);                    \
-  template bool intersects(const Segment2T<T>& s, const OrientedRectT<T>& b);            \
-  template bool intersects(const OrientedRectT<T>& b, const Segment2T<T>& s);            \
-  template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const CircleT<T>& c); \
-  template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const RectT<T>& r);   \
-  template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const OrientedRectT<T>& b);
+#define SIMDPHYS_INSTANTIATE_GEOMETRY2D_LINE_TESTS(T)                                        \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, Segment2T, CircleT)                  \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, Segment2T, RectT)                    \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, Segment2T, OrientedRectT)            \
+  template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const CircleT<T>& shape); \
+  template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const RectT<T>& shape);   \
+  template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const OrientedRectT<T>& shape);
 SIMDPHYS_INSTANTIATE_GEOMETRY2D_LINE_TESTS(float)
 SIMDPHYS_INSTANTIATE_GEOMETRY2D_LINE_TESTS(double)
 #undef SIMDPHYS_INSTANTIATE_GEOMETRY2D_LINE_TESTS

@@ -3,6 +3,8 @@
 #pragma once
 
 #include "simdphys/geometry3d/epa.hpp"
+#include "src/reference/geometry3d/gjk-inl.hpp"
+#include "src/reference/math-inl.hpp"
 
 namespace simdphys {
 
@@ -255,6 +257,31 @@ EpaCoreResult<T> epaCore(const CorePair<T>& cores, const Vec3<T>& origin, const 
     result.pointA += l[m] * poly.vertices[f.v[m]].a;
     result.pointB += l[m] * poly.vertices[f.v[m]].b;
   }
+  return result;
+}
+
+template <class T>
+std::optional<PenetrationT<T>> epa(const Cores<T>& shapes) {
+  const GjkSolution<T> g = solveGjk(shapes);
+  if (!g.touching()) return std::nullopt;
+  const GjkRun<T>& run = g.run;
+  const T ra = g.ra, rb = g.rb, core = g.core;
+  const Vec3<T>& origin = g.origin;
+  PenetrationT<T> result;
+  if (!run.overlap) {
+    result.normal = -g.fromBToA();
+    result.depth = std::max(T(0), ra + rb - core);
+    result.pointA = g.pointA() + ra * result.normal + origin;
+    result.pointB = g.pointB() - rb * result.normal + origin;
+    return result;
+  }
+  // EPA runs in GJK's scaled coordinates (GjkRun::unit); its lengths are unscaled here.
+  const EpaCoreResult<T> e = epaCore(shapes.pair, origin, run, g.towardB);
+  result.normal = e.normal;
+  result.depth = e.depth / run.unit + ra + rb;
+  result.pointA = e.pointA / run.unit + ra * e.normal + origin;
+  result.pointB = e.pointB / run.unit - rb * e.normal + origin;
+  result.iterations = e.iterations;
   return result;
 }
 

@@ -5,6 +5,7 @@
 
 #include "simdphys/geometry3d/intersect.hpp"
 #include "src/reference/geometry3d/point_tests-inl.hpp"
+#include "src/reference/math-inl.hpp"
 
 namespace simdphys {
 

@@ -1,5 +1,6 @@
 // geometry3d/intersect.hpp, compiled once: its function templates for float and double.
 #include "src/reference/geometry3d/intersect-inl.hpp"
+#include "src/reference/instantiate.hpp"
 
 namespace simdphys::detail {
 
@@ -15,32 +16,22 @@ SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT_DETAIL(double)
 
 namespace simdphys {
 
-#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(T)                                \
-  template bool intersects(const SphereT<T>& a, const SphereT<T>& b);               \
-  template bool intersects(const SphereT<T>& sphere, const AabbT<T>& box);          \
-  template bool intersects(const AabbT<T>& box, const SphereT<T>& sphere);          \
-  template bool intersects(const SphereT<T>& sphere, const ObbT<T>& box);           \
-  template bool intersects(const ObbT<T>& box, const SphereT<T>& sphere);           \
-  template bool intersects(const SphereT<T>& sphere, const PlaneT<T>& plane);       \
-  template bool intersects(const PlaneT<T>& plane, const SphereT<T>& sphere);       \
-  template bool intersects(const AabbT<T>& a, const AabbT<T>& b);                   \
-  template bool intersects(const AabbT<T>& a, const ObbT<T>& b);                    \
-  template bool intersects(const ObbT<T>& b, const AabbT<T>& a);                    \
-  template bool intersects(const AabbT<T>& box, const PlaneT<T>& plane);            \
-  template bool intersects(const PlaneT<T>& plane, const AabbT<T>& box);            \
-  template bool intersects(const ObbT<T>& a, const ObbT<T>& b);                     \
-  template bool intersects(const ObbT<T>& box, const PlaneT<T>& plane);             \
-  template bool intersects(const PlaneT<T>& plane, const ObbT<T>& box);             \
-  template bool intersects(const PlaneT<T>& a, const PlaneT<T>& b);                 \
-  template bool intersects(const TriangleT<T>& triangle, const SphereT<T>& sphere); \
-  template bool intersects(const SphereT<T>& sphere, const TriangleT<T>& triangle); \
-  template bool intersects(const TriangleT<T>& triangle, const AabbT<T>& box);      \
-  template bool intersects(const AabbT<T>& box, const TriangleT<T>& triangle);      \
-  template bool intersects(const TriangleT<T>& triangle, const ObbT<T>& box);       \
-  template bool intersects(const ObbT<T>& box, const TriangleT<T>& triangle);       \
-  template bool intersects(const TriangleT<T>& triangle, const PlaneT<T>& plane);   \
-  template bool intersects(const PlaneT<T>& plane, const TriangleT<T>& triangle);   \
-  template bool intersects(const TriangleT<T>& a, const TriangleT<T>& b);
+#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(T)                        \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, AabbT)     \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, ObbT)      \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, PlaneT)    \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, TriangleT) \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, AabbT, ObbT)        \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, AabbT, PlaneT)      \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, AabbT, TriangleT)   \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, ObbT, PlaneT)       \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, ObbT, TriangleT)    \
+  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, PlaneT, TriangleT)  \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, SphereT)              \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, AabbT)                \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, ObbT)                 \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, PlaneT)               \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, TriangleT)
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(float)
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(double)
 #undef SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT

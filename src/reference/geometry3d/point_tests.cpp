@@ -1,28 +1,20 @@
 // geometry3d/point_tests.hpp, compiled once: its function templates for float and double.
 #include "src/reference/geometry3d/point_tests-inl.hpp"
+#include "src/reference/instantiate.hpp"
 
 namespace simdphys {
 
-#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_POINT_TESTS(T)                                             \
-  template bool contains(const SphereT<T>& sphere, const detail::NoDeduce<Vec3<T>>& point);        \
-  template bool contains(const AabbT<T>& box, const detail::NoDeduce<Vec3<T>>& point);             \
-  template bool contains(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point);              \
-  template bool contains(const PlaneT<T>& plane, const detail::NoDeduce<Vec3<T>>& point);          \
-  template bool contains(const SegmentT<T>& segment, const detail::NoDeduce<Vec3<T>>& point);      \
-  template bool contains(const RayT<T>& ray, const detail::NoDeduce<Vec3<T>>& point);              \
-  template bool contains(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T>>& point);    \
-  template Vec3<T> closestPoint(const SphereT<T>& sphere, const detail::NoDeduce<Vec3<T>>& point); \
-  template Vec3<T> closestPoint(const AabbT<T>& box, const detail::NoDeduce<Vec3<T>>& point);      \
-  template Vec3<T> closestPoint(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point);       \
-  template Vec3<T> closestPoint(const PlaneT<T>& plane, const detail::NoDeduce<Vec3<T>>& point);   \
-  template Vec3<T> closestPoint(const SegmentT<T>& segment,                                        \
-                                const detail::NoDeduce<Vec3<T>>& point);                           \
-  template Vec3<T> closestPoint(const RayT<T>& ray, const detail::NoDeduce<Vec3<T>>& point);       \
-  template Vec3<T> closestPoint(const TriangleT<T>& triangle,                                      \
-                                const detail::NoDeduce<Vec3<T>>& point);                           \
-  template Vec3<T> barycentric(const TriangleT<T>& triangle,                                       \
-                               const detail::NoDeduce<Vec3<T>>& point);                            \
-  template SegmentClosestPointsT<T> closestPoints(const SegmentT<T>& first,                        \
+#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_POINT_TESTS(T)                      \
+  SIMDPHYS_INSTANTIATE_POINT_QUERIES(T, SphereT, Vec3)                      \
+  SIMDPHYS_INSTANTIATE_POINT_QUERIES(T, AabbT, Vec3)                        \
+  SIMDPHYS_INSTANTIATE_POINT_QUERIES(T, ObbT, Vec3)                         \
+  SIMDPHYS_INSTANTIATE_POINT_QUERIES(T, PlaneT, Vec3)                       \
+  SIMDPHYS_INSTANTIATE_POINT_QUERIES(T, SegmentT, Vec3)                     \
+  SIMDPHYS_INSTANTIATE_POINT_QUERIES(T, RayT, Vec3)                         \
+  SIMDPHYS_INSTANTIATE_POINT_QUERIES(T, TriangleT, Vec3)                    \
+  template Vec3<T> barycentric(const TriangleT<T>& triangle,                \
+                               const detail::NoDeduce<Vec3<T>>& point);     \
+  template SegmentClosestPointsT<T> closestPoints(const SegmentT<T>& first, \
                                                   const SegmentT<T>& second);
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_POINT_TESTS(float)
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_POINT_TESTS(double)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "simdphys/geometry3d/raycast.hpp"
+#include "src/reference/math-inl.hpp"
 
 namespace simdphys {
 
