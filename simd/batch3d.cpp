@@ -116,12 +116,12 @@ class ClosestHit {
     index_ = hn::IfThenElse(hn::RebindMask(du(d), better), index, index_);
   }
 
-  StreamHit result(D d) const {
+  ElementHit result(D d) const {
     alignas(64) float t[hn::MaxLanes(D())];
     alignas(64) std::uint32_t index[hn::MaxLanes(D())];
     hn::Store(t_, d, t);
     hn::Store(index_, du(d), index);
-    StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+    ElementHit best;  // a miss
     for (std::size_t k = 0; k < hn::Lanes(d); ++k)
       if (index[k] != kNoHit && (t[k] < best.t || (t[k] == best.t && index[k] < best.index)))
         best = {index[k], t[k]};
@@ -136,7 +136,7 @@ class ClosestHit {
 
 // The slab test of geometry3d/raycast.hpp: near and far faces chosen by the sign bit of the
 // direction, (face - o) / d, a NaN (origin on a face plane, direction 0) bounds nothing.
-StreamHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
+ElementHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
   const hn::ScalableTag<float> d;
   const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
   const float* lo[3] = {v[fields::Box::minX], v[fields::Box::minY], v[fields::Box::minZ]};
@@ -169,7 +169,7 @@ StreamHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
 
 // The sphere test of geometry3d/raycast.hpp, step for step: the chord's half-length from the
 // distance of the centre to the line, the entry as (c0 / dd) / (b + f) to avoid cancellation.
-StreamHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
+ElementHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
   const hn::ScalableTag<float> d;
   const auto dx = hn::Set(d, r.dx), dy = hn::Set(d, r.dy), dz = hn::Set(d, r.dz);
   const auto dd = squaredLength(dx, dy, dz);
@@ -207,7 +207,7 @@ StreamHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
 }
 
 // raycast.hpp's intersectTriangle, lane per triangle (watertight-inl.hpp).
-StreamHit RayClosestTriangle(const WatertightQuery& r, const TrianglesView& v) {
+ElementHit RayClosestTriangle(const WatertightQuery& r, const TrianglesView& v) {
   const hn::ScalableTag<float> d;
   ClosestHit closest(d);
   for (std::size_t i = 0; i < v.padded; i += hn::Lanes(d)) {
@@ -279,11 +279,11 @@ void ClosestPointsOnBoxesAutovec(float x, float y, float z, const BoxesView& v, 
   }
 }
 
-StreamHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
+ElementHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
   const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
   const float* lo[3] = {v[fields::Box::minX], v[fields::Box::minY], v[fields::Box::minZ]};
   const float* hi[3] = {v[fields::Box::maxX], v[fields::Box::maxY], v[fields::Box::maxZ]};
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  ElementHit best;  // a miss
   for (std::size_t i = 0; i < v.count; ++i) {
     float enter = -std::numeric_limits<float>::infinity();
     float exit = std::numeric_limits<float>::infinity();
@@ -300,9 +300,9 @@ StreamHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
   return best;
 }
 
-StreamHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
+ElementHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
   const float dd = r.dx * r.dx + (r.dy * r.dy + r.dz * r.dz);
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  ElementHit best;  // a miss
   for (std::size_t i = 0; i < v.count; ++i) {
     const float ex = v[fields::Sphere::x][i] - r.ox, ey = v[fields::Sphere::y][i] - r.oy,
                 ez = v[fields::Sphere::z][i] - r.oz;
@@ -330,10 +330,10 @@ StreamHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
 
 // raycast.hpp's intersectTriangle per element: plain products, recomputed exactly only where one
 // rounds to zero.
-StreamHit RayClosestTriangleAutovec(const WatertightQuery& r, const TrianglesView& v) {
+ElementHit RayClosestTriangleAutovec(const WatertightQuery& r, const TrianglesView& v) {
   const float origin[3] = {r.ox, r.oy, r.oz};
   const int k[3] = {r.kx, r.ky, r.kz};
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  ElementHit best;  // a miss
   for (std::size_t i = 0; i < v.count; ++i) {
     float px[3], py[3], pz[3];
     for (int q = 0; q < 3; ++q) {

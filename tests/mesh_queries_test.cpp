@@ -63,12 +63,12 @@ TEST_P(MeshQueries, SegmentsEqualBruteForce) {
     const Vec3f b = a + r.uniform(0, 20) * r.unitDirection();
     const Segment s{a, b};
     // Brute force: raycast.hpp's linecast per triangle (t a distance), the same rule.
-    std::vector<MeshHit> hits;
+    std::vector<ElementHit> hits;
     for (std::uint32_t k = 0; k < soup.size(); ++k)
       if (auto h = linecast(soup.triangle(k), s)) hits.push_back({k, h->t});
-    const MeshHit expected = test::closestByRule(hits);
-    const MeshHit found = bvh.linecast(s);
-    EXPECT_EQ(found.id, expected.id) << "segment " << i;
+    const ElementHit expected = test::closestByRule(hits);
+    const ElementHit found = bvh.linecast(s);
+    EXPECT_EQ(found.index, expected.index) << "segment " << i;
     // t: the tree's t (in units of b - a) times the length, against the per-triangle linecast's
     // same product: exact.
     if (expected.hit()) {
@@ -125,10 +125,10 @@ TEST_P(MeshQueries, RefitAnswersLikeARebuild) {
   const MeshBvh rebuilt(mesh);
   const RayStream rays = scenes::makeIncoherentRays(3000);
   for (std::size_t i = 0; i < rays.size(); ++i) {
-    const MeshHit a = bvh.raycast(rays[i]), b = rebuilt.raycast(rays[i]);
-    const MeshHit expected = test::bruteRaycast(mesh, rays[i]);
-    EXPECT_EQ(a.id, expected.id) << "ray " << i;
-    EXPECT_EQ(b.id, expected.id) << "ray " << i;
+    const ElementHit a = bvh.raycast(rays[i]), b = rebuilt.raycast(rays[i]);
+    const ElementHit expected = test::bruteRaycast(mesh, rays[i]);
+    EXPECT_EQ(a.index, expected.index) << "ray " << i;
+    EXPECT_EQ(b.index, expected.index) << "ray " << i;
     if (expected.hit()) {
       EXPECT_EQ(a.t, expected.t) << "ray " << i;
     }

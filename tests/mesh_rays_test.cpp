@@ -16,8 +16,8 @@ namespace {
 
 using test::OnEveryPath;
 
-void expectSame(const MeshHit& found, const MeshHit& expected, const std::string& what) {
-  EXPECT_EQ(found.id, expected.id) << what;
+void expectSame(const ElementHit& found, const ElementHit& expected, const std::string& what) {
+  EXPECT_EQ(found.index, expected.index) << what;
   if (expected.hit()) {
     EXPECT_EQ(found.t, expected.t) << what;  // exact: same arithmetic
   }
@@ -28,13 +28,13 @@ void checkAgainstBruteForce(const Mesh& mesh, const std::vector<Ray>& rays, floa
   const MeshBvh bvh(mesh);
   RayStream stream;
   for (const Ray& r : rays) stream.push(r, tMax);
-  std::vector<MeshHit> streamed(rays.size());
+  std::vector<ElementHit> streamed(rays.size());
   bvh.raycast(stream, streamed);
   std::vector<std::uint8_t> occluded(rays.size());
   bvh.occluded(stream, occluded);
   std::size_t hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
-    const MeshHit expected = test::bruteRaycast(mesh, rays[i], tMax);
+    const ElementHit expected = test::bruteRaycast(mesh, rays[i], tMax);
     hits += expected.hit();
     const std::string what = "ray " + std::to_string(i);
     expectSame(bvh.raycast(rays[i], tMax), expected, what);
@@ -82,8 +82,8 @@ TEST_P(MeshRays, TiesGoToTheSmallerId) {
   for (int copy = 0; copy < 20; ++copy) m.triangles.push_back({1, 3, 5});
   const MeshBvh bvh(m);
   // Through the fan's centre: every fan triangle is hit at t = 2 exactly.
-  const MeshHit centre = bvh.raycast({{0, 2, 0}, {0, -1, 0}});
-  EXPECT_EQ(centre.id, 0u);
+  const ElementHit centre = bvh.raycast({{0, 2, 0}, {0, -1, 0}});
+  EXPECT_EQ(centre.index, 0u);
   EXPECT_EQ(centre.t, 2.0f);
   // Inside the copied triangle (and fan triangles 1..4 beneath it, coplanar): the smallest id.
   const Vec3f inside = (m.vertices[1] + m.vertices[3] + m.vertices[5]) / 3;
@@ -112,7 +112,7 @@ TEST_P(MeshRays, RaysAtSharedVerticesAndEdgesNeverMiss) {
         const Vec3f from(target.x() + r.uniform(-10, 10), 50, target.z() + r.uniform(-10, 10));
         const Ray oblique{from, target - from};  // not unit: t is in units of it
         for (const Ray& ray : {vertical, oblique}) {
-          const MeshHit h = bvh.raycast(ray);
+          const ElementHit h = bvh.raycast(ray);
           ASSERT_TRUE(h.hit()) << "missed " << target.transpose() << " from "
                                << ray.origin.transpose();
           expectSame(h, test::bruteRaycast(mesh, ray), "aimed ray");
@@ -158,13 +158,13 @@ const W2& w2() {
 
 TEST_P(MeshRays, W2FiguresAndDoubleReference) {
   for (const W2Set& s : w2().sets) {
-    std::vector<MeshHit> hits(s.rays.size());
+    std::vector<ElementHit> hits(s.rays.size());
     w2().bvh.raycast(s.rays, hits);
     const scenes::RaysReference found = scenes::summarise(hits);
     EXPECT_EQ(found.hits, s.figures.hits);
     // The figure has 8 significant digits.
     EXPECT_NEAR(found.sumT, s.figures.sumT, scenes::kSumTTolerance * s.figures.sumT);
-    std::vector<MeshHit> sampleHits;
+    std::vector<ElementHit> sampleHits;
     for (std::size_t i : s.sampled) sampleHits.push_back(hits[i]);
     const auto c = scenes::compareWithReference(sampleHits, s.reference);
     // W2: rays may differ from the double reference only where its hit is within 1e-5 of an edge.
@@ -188,7 +188,7 @@ TEST(MeshRayErrors, BadRaysAreRejected) {
   RayStream s;
   s.push({{0, 1, 0}, {0, 1, 0}});
   test::expectError([&] { s.push({{0, 1, 0}, {0, INFINITY, 0}}); }, "RayStream::push: element 1");
-  std::vector<MeshHit> out(2);
+  std::vector<ElementHit> out(2);
   test::expectError([&] { bvh.raycast(s, out); }, "2 hits for 1 rays");
 }
 
