@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+// ray_slab-inl.hpp names the slab constants of traversal_ray.hpp.
+#include "core/traversal_ray.hpp"
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 #include "simdphys/detail/float_math.hpp"  // differenceOfProducts: the exact edge fallback
@@ -26,6 +28,11 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 #include "simd/compress-inl.hpp"
 #include "simd/watertight-inl.hpp"
+// The one ray-box slab test (clipSlab), for vectors of boxes and, through the one-float lane
+// declared first, for the plain-loop baseline.
+#include "core/scalar_lanes-inl.hpp"
+
+#include "core/ray_slab-inl.hpp"
 
 // Eigen sums a 3-vector's terms as x + (y + z) (its unrolled reduction halves the range), so
 // squaredNorm and dot are written in that order here.
@@ -135,7 +142,8 @@ class ClosestHit {
 };
 
 // The slab test of geometry3d/raycast.hpp: near and far faces chosen by the sign bit of the
-// direction, (face - o) / d, a NaN (origin on a face plane, direction 0) bounds nothing.
+// direction, (face - o) / d, each clipping (-inf, inf) by clipSlab's comparisons, so that a NaN
+// (origin on a face plane, direction 0) bounds nothing.
 ElementHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
   const hn::ScalableTag<float> d;
   const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
@@ -155,8 +163,7 @@ ElementHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
       const auto oa = hn::Set(d, o[a]), da = hn::Set(d, dir[a]);
       const auto tNear = hn::Div(hn::Sub(hn::Load(d, nearFace[a] + i), oa), da);
       const auto tFar = hn::Div(hn::Sub(hn::Load(d, farFace[a] + i), oa), da);
-      enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
-      exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
+      clipSlab<false>(tNear, tFar, enter, exit);
     }
     const auto zero = hn::Zero(d), tMax = hn::Set(d, r.tMax);
     const auto fromOutside = hn::Ge(enter, zero);
@@ -291,8 +298,7 @@ ElementHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
       const bool negative = std::signbit(dir[a]);
       const float tNear = ((negative ? hi[a][i] : lo[a][i]) - o[a]) / dir[a];
       const float tFar = ((negative ? lo[a][i] : hi[a][i]) - o[a]) / dir[a];
-      enter = tNear > enter ? tNear : enter;
-      exit = tFar < exit ? tFar : exit;
+      clipSlab<false>(tNear, tFar, enter, exit);
     }
     const float t = (enter >= 0 ? enter : exit) + 0.0f;
     if (enter <= exit && t >= 0 && t <= r.tMax && t < best.t) best = {std::uint32_t(i), t};
