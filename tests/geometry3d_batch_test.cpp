@@ -142,6 +142,16 @@ TEST_P(Batch3d, RaycastHardCases) {
   ASSERT_TRUE(tie.hit());
   EXPECT_EQ(tie.index, 0u);
   EXPECT_EQ(tie.t, 1.0f);
+  // A miss is the same ElementHit on every path and from every stream: index kNoHit, t = +inf,
+  // as a default ElementHit and the mesh raycast's miss.
+  TriangleStream triangles;
+  triangles.push({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  for (const ElementHit miss : {raycast(rays[4], boxes), raycast(rays[4], spheres),
+                                raycast(rays[4], triangles), ElementHit{}}) {
+    EXPECT_FALSE(miss.hit());
+    EXPECT_EQ(miss.index, kNoHit);
+    EXPECT_EQ(miss.t, std::numeric_limits<float>::infinity());
+  }
 }
 
 // A small heightfield as in W2: two triangles a cell, shared edges and vertices everywhere.
