@@ -63,12 +63,12 @@ void errorAgainstDouble(benchmark::State& state, const Stream& stream, Get eleme
     for (std::uint32_t i = 0; i < stream.size(); ++i)
       if (auto h = raycast(elementDouble(i), rayd); h && (!exact || h->t < exact->second))
         exact = std::pair{i, h->t};
-    if (hit.has_value() != exact.has_value() || (hit && hit->index != exact->first)) {
+    if (hit.hit() != exact.has_value() || (hit.hit() && hit.index != exact->first)) {
       ++differing;
       continue;
     }
-    if (hit)
-      worst = std::max(worst, std::abs(hit->t - exact->second) / std::max(1.0, exact->second));
+    if (hit.hit())
+      worst = std::max(worst, std::abs(hit.t - exact->second) / std::max(1.0, exact->second));
   }
   state.counters["error"] = worst;
   state.counters["differing"] = differing;
@@ -79,7 +79,7 @@ void rayBody(benchmark::State& state, const Stream& stream, Get elementDouble) {
   std::size_t hits = 0;
   for (auto _ : state) {
     hits = 0;
-    for (const Ray& ray : rays()) hits += raycast(ray, stream).has_value();
+    for (const Ray& ray : rays()) hits += raycast(ray, stream).hit();
     benchmark::DoNotOptimize(hits);
   }
   state.SetItemsProcessed(std::int64_t(state.iterations() * rays().size() * stream.size()));
@@ -101,7 +101,7 @@ void autovecBody(benchmark::State& state, const Stream& stream, Kernel kernel) {
                              ray.direction.y(),
                              ray.direction.z(),
                              std::numeric_limits<float>::infinity()};
-      hits += kernel(q, view(stream)).index != simd::kNoHit;
+      hits += kernel(q, view(stream)).index != kNoHit;
     }
     benchmark::DoNotOptimize(hits);
   }

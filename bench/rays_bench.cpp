@@ -30,7 +30,7 @@ void registerRays() {
           [kind, options](benchmark::State& state) {
             const RaySet& set = raySet(kind);
             const MeshBvh& bvh = raysMeshBvh();
-            std::vector<MeshHit> hits(set.rays.size());
+            std::vector<ElementHit> hits(set.rays.size());
             for (auto _ : state) {
               bvh.raycast(set.rays, hits, options);
               benchmark::DoNotOptimize(hits.data());

@@ -66,7 +66,7 @@ inline const MeshBvh& raysMeshBvh() {
 // is measured whatever it answers, `exact` is 0 and hits_missing says by how much); sum t and
 // sum id are reported beside their figures; `differ` counts the rays whose answer differs from the
 // double reference beyond W2's excuse (hit within 1e-5 of an edge), `excused` the others.
-inline void reportRays(benchmark::State& state, const RaySet& set, std::span<const MeshHit> hits,
+inline void reportRays(benchmark::State& state, const RaySet& set, std::span<const ElementHit> hits,
                        bool peer = false) {
   const double n = double(set.rays.size());
   state.SetItemsProcessed(std::int64_t(state.iterations() * set.rays.size()));

@@ -1,6 +1,6 @@
 // The sinks of a ray walk: the closest hit under W2's rule (mesh_bvh.hpp), and any hit. Included
 // inside a namespace per path (src/mesh/ for the reference, each SIMD target's namespace in
-// simd/bvh_ray.cpp; no include guard, by design). The includer provides MeshHit and kTieWindow
+// simd/bvh_ray.cpp; no include guard, by design). The includer provides ElementHit and kTieWindow
 // (bvh_types.hpp), <algorithm> and <limits>.
 
 // The closest hit under W2's rule: the smallest t, and among the hits within kTieWindow of it the
@@ -40,17 +40,17 @@ class ClosestHits {
     if (worse(ties_[worst], {t, id})) ties_[worst] = {t, id};
   }
 
-  // The winner: id kNoHit and t = inf if nothing was hit.
-  ::simdphys::MeshHit result() const {
-    ::simdphys::MeshHit best;
+  // The winner: index kNoHit and t = inf if nothing was hit.
+  ::simdphys::ElementHit result() const {
+    ::simdphys::ElementHit best;
     for (int k = 0; k < count_; ++k)
-      if (ties_[k].id < best.id) best = {ties_[k].id, ties_[k].t};
+      if (ties_[k].id < best.index) best = {ties_[k].id, ties_[k].t};
     return best;
   }
 
  private:
-  // A hit inside the window. Not a MeshHit: that one's default initialisation (a miss) would cost
-  // every ray 16 stores it never reads, and packets hold 16 of these.
+  // A hit inside the window. Not an ElementHit: that one's default initialisation (a miss) would
+  // cost every ray 16 stores it never reads, and packets hold 16 of these.
   struct Tie {
     float t;
     std::uint32_t id;

@@ -8,8 +8,10 @@
 // tNear, exit falls to the far face's tFar. kFinite: no distance is NaN, so Max/Min do it;
 // otherwise comparisons, which leave the interval as it is where a distance is NaN (0 * inf, or
 // 0 / 0: the origin on a face the ray runs along, so the whole line lies in that slab). The walks
-// below clip [0, bound] with products by the inverse; an exact ray-box hit (raycast.hpp's slabs,
-// batch3d.cpp's rayClosestBox) is the same clip of (-inf, inf) with quotients by the direction.
+// below clip [0, bound] with products by the inverse; an exact ray-box hit is the same clip of
+// (-inf, inf) with quotients by the direction (batch3d.cpp's rayClosestBox and its baseline; the
+// reference's slabs, src/reference/geometry3d/raycast-inl.hpp, writes the comparisons out, since
+// it also keeps the axis of the face for the hit's normal).
 template <bool kFinite, class V>
 inline void clipSlab(V tNear, V tFar, V& enter, V& exit) {
   if constexpr (kFinite) {

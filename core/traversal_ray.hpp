@@ -5,7 +5,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <utility>
+
+#include "core/view.hpp"
+#include "simdphys/stream_fields.hpp"
 
 namespace simdphys::detail {
 
@@ -67,6 +71,15 @@ inline void setSlabs(TraversalRay& r, float ox, float oy, float oz, float dx, fl
   r.sz = 1.0f / d[kz];
   setSlabs(r, ox, oy, oz, dx, dy, dz, tMax);
   return r;
+}
+
+// Ray i of a ray view (fields::Ray), as both paths read a ray stream.
+[[gnu::always_inline]] inline TraversalRay traversalRay(const core::View<fields::Ray>& rays,
+                                                        std::size_t i) {
+  using R = fields::Ray;
+  return traversalRay(rays[R::origin][i], rays[R::origin + 1][i], rays[R::origin + 2][i],
+                      rays[R::direction][i], rays[R::direction + 1][i], rays[R::direction + 2][i],
+                      rays[R::tMax][i]);
 }
 
 }  // namespace simdphys::detail

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+// ray_slab-inl.hpp names the slab constants of traversal_ray.hpp.
+#include "core/traversal_ray.hpp"
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 #include "simdphys/detail/float_math.hpp"  // differenceOfProducts: the exact edge fallback
@@ -23,6 +25,11 @@ SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/compress-inl.hpp"
 #include "simd/watertight-inl.hpp"
+// The one ray-box slab test (clipSlab), for vectors of boxes and, through the one-float lane
+// declared first, for the plain-loop baseline.
+#include "core/scalar_lanes-inl.hpp"
+
+#include "core/ray_slab-inl.hpp"
 
 // Eigen sums a 3-vector's terms as x + (y + z) (its unrolled reduction halves the range), so
 // squaredNorm and dot are written in that order here.
@@ -113,12 +120,12 @@ class ClosestHit {
     index_ = hn::IfThenElse(hn::RebindMask(du(d), better), index, index_);
   }
 
-  StreamHit result(D d) const {
+  ElementHit result(D d) const {
     alignas(64) float t[hn::MaxLanes(D())];
     alignas(64) std::uint32_t index[hn::MaxLanes(D())];
     hn::Store(t_, d, t);
     hn::Store(index_, du(d), index);
-    StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+    ElementHit best;  // a miss
     for (std::size_t k = 0; k < hn::Lanes(d); ++k)
       if (index[k] != kNoHit && (t[k] < best.t || (t[k] == best.t && index[k] < best.index)))
         best = {index[k], t[k]};
@@ -132,8 +139,9 @@ class ClosestHit {
 };
 
 // The slab test of geometry3d/raycast.hpp: near and far faces chosen by the sign bit of the
-// direction, (face - o) / d, a NaN (origin on a face plane, direction 0) bounds nothing.
-StreamHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
+// direction, (face - o) / d, each clipping (-inf, inf) by clipSlab's comparisons, so that a NaN
+// (origin on a face plane, direction 0) bounds nothing.
+ElementHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
   const hn::ScalableTag<float> d;
   const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
   const float* lo[3] = {v[fields::Box::minX], v[fields::Box::minY], v[fields::Box::minZ]};
@@ -152,8 +160,7 @@ StreamHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
       const auto oa = hn::Set(d, o[a]), da = hn::Set(d, dir[a]);
       const auto tNear = hn::Div(hn::Sub(hn::Load(d, nearFace[a] + i), oa), da);
       const auto tFar = hn::Div(hn::Sub(hn::Load(d, farFace[a] + i), oa), da);
-      enter = hn::IfThenElse(hn::Gt(tNear, enter), tNear, enter);
-      exit = hn::IfThenElse(hn::Lt(tFar, exit), tFar, exit);
+      clipSlab<false>(tNear, tFar, enter, exit);
     }
     const auto zero = hn::Zero(d), tMax = hn::Set(d, r.tMax);
     const auto fromOutside = hn::Ge(enter, zero);
@@ -166,7 +173,7 @@ StreamHit RayClosestBox(const RayQuery& r, const BoxesView& v) {
 
 // The sphere test of geometry3d/raycast.hpp, step for step: the chord's half-length from the
 // distance of the centre to the line, the entry as (c0 / dd) / (b + f) to avoid cancellation.
-StreamHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
+ElementHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
   const hn::ScalableTag<float> d;
   const auto dx = hn::Set(d, r.dx), dy = hn::Set(d, r.dy), dz = hn::Set(d, r.dz);
   const auto dd = squaredLength(dx, dy, dz);
@@ -204,7 +211,7 @@ StreamHit RayClosestSphere(const RayQuery& r, const SpheresView& v) {
 }
 
 // raycast.hpp's intersectTriangle, lane per triangle (watertight-inl.hpp).
-StreamHit RayClosestTriangle(const WatertightQuery& r, const TrianglesView& v) {
+ElementHit RayClosestTriangle(const WatertightQuery& r, const TrianglesView& v) {
   const hn::ScalableTag<float> d;
   ClosestHit closest(d);
   for (std::size_t i = 0; i < v.padded; i += hn::Lanes(d)) {
@@ -276,11 +283,11 @@ void ClosestPointsOnBoxesAutovec(float x, float y, float z, const BoxesView& v, 
   }
 }
 
-StreamHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
+ElementHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
   const float o[3] = {r.ox, r.oy, r.oz}, dir[3] = {r.dx, r.dy, r.dz};
   const float* lo[3] = {v[fields::Box::minX], v[fields::Box::minY], v[fields::Box::minZ]};
   const float* hi[3] = {v[fields::Box::maxX], v[fields::Box::maxY], v[fields::Box::maxZ]};
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  ElementHit best;  // a miss
   for (std::size_t i = 0; i < v.count; ++i) {
     float enter = -std::numeric_limits<float>::infinity();
     float exit = std::numeric_limits<float>::infinity();
@@ -288,8 +295,7 @@ StreamHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
       const bool negative = std::signbit(dir[a]);
       const float tNear = ((negative ? hi[a][i] : lo[a][i]) - o[a]) / dir[a];
       const float tFar = ((negative ? lo[a][i] : hi[a][i]) - o[a]) / dir[a];
-      enter = tNear > enter ? tNear : enter;
-      exit = tFar < exit ? tFar : exit;
+      clipSlab<false>(tNear, tFar, enter, exit);
     }
     const float t = (enter >= 0 ? enter : exit) + 0.0f;
     if (enter <= exit && t >= 0 && t <= r.tMax && t < best.t) best = {std::uint32_t(i), t};
@@ -297,9 +303,9 @@ StreamHit RayClosestBoxAutovec(const RayQuery& r, const BoxesView& v) {
   return best;
 }
 
-StreamHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
+ElementHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
   const float dd = r.dx * r.dx + (r.dy * r.dy + r.dz * r.dz);
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  ElementHit best;  // a miss
   for (std::size_t i = 0; i < v.count; ++i) {
     const float ex = v[fields::Sphere::x][i] - r.ox, ey = v[fields::Sphere::y][i] - r.oy,
                 ez = v[fields::Sphere::z][i] - r.oz;
@@ -327,10 +333,10 @@ StreamHit RayClosestSphereAutovec(const RayQuery& r, const SpheresView& v) {
 
 // raycast.hpp's intersectTriangle per element: plain products, recomputed exactly only where one
 // rounds to zero.
-StreamHit RayClosestTriangleAutovec(const WatertightQuery& r, const TrianglesView& v) {
+ElementHit RayClosestTriangleAutovec(const WatertightQuery& r, const TrianglesView& v) {
   const float origin[3] = {r.ox, r.oy, r.oz};
   const int k[3] = {r.kx, r.ky, r.kz};
-  StreamHit best{kNoHit, std::numeric_limits<float>::infinity()};
+  ElementHit best;  // a miss
   for (std::size_t i = 0; i < v.count; ++i) {
     float px[3], py[3], pz[3];
     for (int q = 0; q < 3; ++q) {

@@ -29,7 +29,7 @@ class RayPacket {
       const bool present = index[i] != kAbsentLane;
       // An absent lane's bound is -inf: no box or triangle passes it.
       ray_[i] =
-          present ? rayAt(rays, index[i])
+          present ? detail::traversalRay(rays, index[i])
                   : detail::traversalRay(0, 0, 0, 1, 1, 1, -std::numeric_limits<float>::infinity());
       const detail::TraversalRay& r = ray_[i];
       hits_[i] = Closest(r.tMax);
@@ -44,7 +44,7 @@ class RayPacket {
   }
 
   // Traces the packet and writes each present ray's closest hit at out[index].
-  void run(MeshHit* out) {
+  void run(ElementHit* out) {
     if (finite_)
       trace<true>();
     else
@@ -243,6 +243,6 @@ class RayPacket {
 // Packets of N.
 template <std::size_t N>
 void closestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                       std::size_t packets, MeshHit* out) {
+                       std::size_t packets, ElementHit* out) {
   for (std::size_t p = 0; p < packets; ++p) RayPacket<N>(mesh, rays, index + p * N).run(out);
 }

@@ -117,11 +117,6 @@ class RayCore {
   int near_[3], far_[3];
 };
 
-detail::TraversalRay rayAt(const RaysView& r, std::size_t i) {
-  return detail::traversalRay(r.origin[0][i], r.origin[1][i], r.origin[2][i], r.direction[0][i],
-                              r.direction[1][i], r.direction[2][i], r.tMax[i]);
-}
-
 template <class Sink>
 void traverse(const MeshView& mesh, const detail::TraversalRay& ray, Sink& sink) {
   if (ray.finiteInverse) {
@@ -134,8 +129,8 @@ void traverse(const MeshView& mesh, const detail::TraversalRay& ray, Sink& sink)
 }
 
 // Ray i of `rays` traced alone: its closest hit.
-MeshHit closestHit(const MeshView& mesh, const RaysView& rays, std::size_t i) {
-  const detail::TraversalRay ray = rayAt(rays, i);
+ElementHit closestHit(const MeshView& mesh, const RaysView& rays, std::size_t i) {
+  const detail::TraversalRay ray = detail::traversalRay(rays, i);
   Closest closest(ray.tMax);
   traverse(mesh, ray, closest);
   return closest.result();
@@ -143,8 +138,8 @@ MeshHit closestHit(const MeshView& mesh, const RaysView& rays, std::size_t i) {
 
 void MeshClosestHits(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t) {
   for (std::size_t i = 0; i < rays.count; ++i) {
-    const MeshHit h = closestHit(mesh, rays, i);
-    id[i] = h.id, t[i] = h.t;
+    const ElementHit h = closestHit(mesh, rays, i);
+    id[i] = h.index, t[i] = h.t;
   }
 }
 
@@ -176,9 +171,10 @@ void MeshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t
     // The slab test's fields only: the watertight shear is not needed for the root's boxes.
     detail::TraversalRay ray;
     const std::uint32_t i = index[k];
-    detail::setSlabs(ray, rays.origin[0][i], rays.origin[1][i], rays.origin[2][i],
-                     rays.direction[0][i], rays.direction[1][i], rays.direction[2][i],
-                     rays.tMax[i]);
+    using R = fields::Ray;
+    detail::setSlabs(ray, rays[R::origin][i], rays[R::origin + 1][i], rays[R::origin + 2][i],
+                     rays[R::direction][i], rays[R::direction + 1][i], rays[R::direction + 2][i],
+                     rays[R::tMax][i]);
     Any any{ray.tMax};
     alignas(64) std::uint32_t refs[2 * BvhNode::kWidth];
     alignas(64) float dists[2 * BvhNode::kWidth];
@@ -192,7 +188,7 @@ void MeshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t
     const float t = *std::min_element(dists, dists + entered);
     std::uint32_t code = 0;
     for (int a = 0; a < 3; ++a) {
-      const float u = (ray.origin[a] + t * rays.direction[a][i] - lo[a]) * scale[a];
+      const float u = (ray.origin[a] + t * rays[fields::Ray::direction + a][i] - lo[a]) * scale[a];
       code |= spreadBits(u > 0 ? std::uint32_t(std::min(u, 511.0f)) : 0) << a;  // NaN: 0
     }
     key[k] = code;
@@ -202,7 +198,7 @@ void MeshRayKeys(const MeshView& mesh, const RaysView& rays, const std::uint32_t
 #include "simd/bvh_packet-inl.hpp"
 
 void MeshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                           std::size_t packets, int width, MeshHit* out) {
+                           std::size_t packets, int width, ElementHit* out) {
   if (width == 16)
     closestHitPackets<16>(mesh, rays, index, packets, out);
   else
@@ -210,13 +206,13 @@ void MeshClosestHitPackets(const MeshView& mesh, const RaysView& rays, const std
 }
 
 void MeshClosestHitsOf(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                       std::size_t n, MeshHit* out) {
+                       std::size_t n, ElementHit* out) {
   for (std::size_t i = 0; i < n; ++i) out[index[i]] = closestHit(mesh, rays, index[i]);
 }
 
 void MeshAnyHits(const MeshView& mesh, const RaysView& rays, std::uint8_t* hit) {
   for (std::size_t i = 0; i < rays.count; ++i) {
-    const detail::TraversalRay ray = rayAt(rays, i);
+    const detail::TraversalRay ray = detail::traversalRay(rays, i);
     Any any{ray.tMax};
     traverse(mesh, ray, any);
     hit[i] = any.found ? 1 : 0;

@@ -178,18 +178,13 @@ extern const Kernel<void(float, float, float, const BoxesView&, float*, float*, 
     closestPointsOnBoxes, closestPointsOnBoxesAutovec;
 
 // The closest element a ray hits, t in [0, tMax] (the scalar raycast's rules), ties to the
-// smaller index; index = kNoHit when none. The ray's direction is unit.
+// smaller index; index = kNoHit when none (core.hpp's ElementHit). The ray's direction is unit.
 struct RayQuery {
   float ox, oy, oz, dx, dy, dz, tMax;
 };
-struct StreamHit {
-  std::uint32_t index;
-  float t;
-};
-inline constexpr std::uint32_t kNoHit = ~0u;
-extern const Kernel<StreamHit(const RayQuery&, const BoxesView&)> rayClosestBox,
+extern const Kernel<ElementHit(const RayQuery&, const BoxesView&)> rayClosestBox,
     rayClosestBoxAutovec;
-extern const Kernel<StreamHit(const RayQuery&, const SpheresView&)> rayClosestSphere,
+extern const Kernel<ElementHit(const RayQuery&, const SpheresView&)> rayClosestSphere,
     rayClosestSphereAutovec;
 // The ray's watertight precomputation (Woop, Benthin, Wald 2013; raycast.hpp's WatertightRay).
 struct WatertightQuery {
@@ -197,7 +192,7 @@ struct WatertightQuery {
   int kx, ky, kz;
   float sx, sy, sz, tMax;
 };
-extern const Kernel<StreamHit(const WatertightQuery&, const TrianglesView&)> rayClosestTriangle,
+extern const Kernel<ElementHit(const WatertightQuery&, const TrianglesView&)> rayClosestTriangle,
     rayClosestTriangleAutovec;
 
 // ---- geometry3d: one OBB against many (obb_batch.cpp) ------------------------------------------
@@ -276,15 +271,11 @@ struct MeshView {
   std::size_t nodeCount;
   const TriangleBlock* blocks;
 };
-// Rays as SoA: origin, direction (non-zero), tMax (>= 0). Read ray by ray, so, unlike the streams
-// above, the arrays need no padding (a single ray is a view of one).
-struct RaysView {
-  const float* origin[3];
-  const float* direction[3];
-  const float* tMax;
-  std::size_t count;
-};
-// Per ray, the closest hit under mesh_bvh.hpp's rule (id kNoHit and t = inf for a miss), or
+// Rays (fields::Ray): origin, direction (non-zero), tMax (>= 0). Read ray by ray, so, unlike the
+// streams above, a view of them need not be padded (padded == count: a chunk of a stream, a
+// single ray as a view of one).
+using RaysView = core::View<fields::Ray>;
+// Per ray, the closest hit under mesh_bvh.hpp's rule (index kNoHit and t = inf for a miss), or
 // whether any triangle is hit (1 / 0): bit for bit what the reference traversal answers.
 extern const Kernel<void(const MeshView& mesh, const RaysView& rays, std::uint32_t* id, float* t)>
     meshClosestHits;
@@ -292,22 +283,17 @@ extern const Kernel<void(const MeshView& mesh, const RaysView& rays, std::uint8_
     meshAnyHits;
 
 // ---- meshes: ray packets (mesh_bvh.hpp, bvh_packet-inl.hpp) -------------------------------------
-}  // namespace simdphys::simd
-namespace simdphys {
-struct MeshHit;  // mesh_bvh.hpp
-}
-namespace simdphys::simd {
 // A packet's lane without a ray (a tile past the image's edge, the stream's tail).
 inline constexpr std::uint32_t kAbsentLane = ~0u;
 // Rays traced in packets of `width` (8 or 16): packet p is the rays index[p * width + i] of `rays`
 // (kAbsentLane: none); each ray's closest hit is written at out[its index], equal to what
 // meshClosestHits answers for it.
 extern const Kernel<void(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                         std::size_t packets, int width, MeshHit* out)>
+                         std::size_t packets, int width, ElementHit* out)>
     meshClosestHitPackets;
 // The rays index[0, n) of `rays` one at a time, in that order, each hit written at out[its index].
 extern const Kernel<void(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
-                         std::size_t n, MeshHit* out)>
+                         std::size_t n, ElementHit* out)>
     meshClosestHitsOf;
 // For ordering rays so that neighbours walk the same nodes: per ray index[k] of `rays`, key[k] is
 // kMissKey if the ray enters no child of the root (it then hits nothing: the traversal's own first

@@ -38,18 +38,18 @@ std::vector<std::uint32_t> each(std::size_t n, Test test) {
 }
 
 template <class Stream>
-std::optional<StreamHit> firstHit(const Ray& ray, const Stream& s, float tMax) {
-  std::optional<StreamHit> best;
+ElementHit firstHit(const Ray& ray, const Stream& s, float tMax) {
+  ElementHit best;
   for (std::uint32_t i = 0; i < s.size(); ++i)
-    if (auto h = raycast(s[i], ray, tMax); h && (!best || h->t < best->t)) best = {i, h->t};
+    if (auto h = raycast(s[i], ray, tMax); h && (!best.hit() || h->t < best.t)) best = {i, h->t};
   return best;
 }
 
-void expectSameHit(const std::optional<StreamHit>& got, const std::optional<StreamHit>& want) {
-  ASSERT_EQ(got.has_value(), want.has_value());
-  if (!want) return;
-  EXPECT_EQ(got->index, want->index);
-  EXPECT_EQ(got->t, want->t);  // the kernels mirror the scalar arithmetic: bit-identical
+void expectSameHit(const ElementHit& got, const ElementHit& want) {
+  ASSERT_EQ(got.hit(), want.hit());
+  if (!want.hit()) return;
+  EXPECT_EQ(got.index, want.index);
+  EXPECT_EQ(got.t, want.t);  // the kernels mirror the scalar arithmetic: bit-identical
 }
 
 class Batch3d : public OnEveryPath {};
@@ -139,9 +139,19 @@ TEST_P(Batch3d, RaycastHardCases) {
     }
   }
   const auto tie = raycast(rays[0], boxes);
-  ASSERT_TRUE(tie.has_value());
-  EXPECT_EQ(tie->index, 0u);
-  EXPECT_EQ(tie->t, 1.0f);
+  ASSERT_TRUE(tie.hit());
+  EXPECT_EQ(tie.index, 0u);
+  EXPECT_EQ(tie.t, 1.0f);
+  // A miss is the same ElementHit on every path and from every stream: index kNoHit, t = +inf,
+  // as a default ElementHit and the mesh raycast's miss.
+  TriangleStream triangles;
+  triangles.push({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  for (const ElementHit miss : {raycast(rays[4], boxes), raycast(rays[4], spheres),
+                                raycast(rays[4], triangles), ElementHit{}}) {
+    EXPECT_FALSE(miss.hit());
+    EXPECT_EQ(miss.index, kNoHit);
+    EXPECT_EQ(miss.t, std::numeric_limits<float>::infinity());
+  }
 }
 
 // A small heightfield as in W2: two triangles a cell, shared edges and vertices everywhere.
@@ -166,7 +176,7 @@ TEST_P(Batch3d, TriangleRaycastsEqualTheScalarRaycast) {
   for (int q = 0; q < 400; ++q) {
     const Ray ray{{r.uniform(-12, 12), r.uniform(2, 6), r.uniform(-12, 12)}, r.unitDirection()};
     const auto want = firstHit(ray, mesh, std::numeric_limits<float>::infinity());
-    hits += want.has_value();
+    hits += want.hit();
     expectSameHit(raycast(ray, mesh), want);
   }
   EXPECT_GT(hits, 50);  // the rays must exercise hits, not only misses
@@ -176,7 +186,7 @@ TEST_P(Batch3d, TriangleRaycastsEqualTheScalarRaycast) {
     for (int i = 0; i < 17; ++i) {
       const Ray down{{-10 + 20.0f * i / 16, 5, -10 + 20.0f * j / 8}, {0, -1, 0}};
       const auto got = raycast(down, mesh);
-      ASSERT_TRUE(got.has_value()) << "leak at " << i << ", " << j;
+      ASSERT_TRUE(got.hit()) << "leak at " << i << ", " << j;
       expectSameHit(got, firstHit(down, mesh, std::numeric_limits<float>::infinity()));
     }
 }

@@ -474,14 +474,14 @@ TEST_P(TriangleReproducersOnPaths, RayAcrossTheRangeHitsAFarTriangle) {
   EXPECT_NEAR(single->t, expected, tolerance);
   TriangleStream stream;
   stream.push(t);
-  const std::optional<StreamHit> batch = raycast(ray, stream);
-  ASSERT_TRUE(batch.has_value());
-  EXPECT_EQ(batch->index, 0u);
-  EXPECT_NEAR(batch->t, expected, tolerance);
+  const ElementHit batch = raycast(ray, stream);
+  ASSERT_TRUE(batch.hit());
+  EXPECT_EQ(batch.index, 0u);
+  EXPECT_NEAR(batch.t, expected, tolerance);
   Mesh mesh;
   mesh.vertices = {t.a, t.b, t.c};
   mesh.triangles = {{0, 1, 2}};
-  const MeshHit hit = MeshBvh(mesh).raycast(ray);
+  const ElementHit hit = MeshBvh(mesh).raycast(ray);
   ASSERT_TRUE(hit.hit());
   EXPECT_NEAR(hit.t, expected, tolerance);
 }

@@ -14,24 +14,24 @@
 namespace simdphys::test {
 
 // The rule over a list of (t, id) hits.
-inline MeshHit closestByRule(const std::vector<MeshHit>& hits) {
+inline ElementHit closestByRule(const std::vector<ElementHit>& hits) {
   float tMin = std::numeric_limits<float>::infinity();
-  for (const MeshHit& h : hits) tMin = std::min(tMin, h.t);
-  MeshHit best;
-  for (const MeshHit& h : hits)
-    if (h.t <= tMin * kTieWindow && h.id < best.id) best = h;
+  for (const ElementHit& h : hits) tMin = std::min(tMin, h.t);
+  ElementHit best;
+  for (const ElementHit& h : hits)
+    if (h.t <= tMin * kTieWindow && h.index < best.index) best = h;
   return best;
 }
 
-inline std::vector<MeshHit> allHits(const Mesh& m, const WatertightRay& ray, float tMax) {
-  std::vector<MeshHit> hits;
+inline std::vector<ElementHit> allHits(const Mesh& m, const WatertightRay& ray, float tMax) {
+  std::vector<ElementHit> hits;
   for (std::uint32_t i = 0; i < m.size(); ++i)
     if (auto h = intersectTriangle(ray, m.triangle(i), tMax)) hits.push_back({i, h->t});
   return hits;
 }
 
-inline MeshHit bruteRaycast(const Mesh& m, const Ray& ray,
-                            float tMax = std::numeric_limits<float>::infinity()) {
+inline ElementHit bruteRaycast(const Mesh& m, const Ray& ray,
+                               float tMax = std::numeric_limits<float>::infinity()) {
   return closestByRule(allHits(m, WatertightRay(ray.origin, ray.direction), tMax));
 }
 

@@ -22,8 +22,8 @@ using test::OnEveryPath;
 using Mode = RayStreamOptions::Mode;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-void expectSame(const MeshHit& found, const MeshHit& expected, const std::string& what) {
-  EXPECT_EQ(found.id, expected.id) << what;
+void expectSame(const ElementHit& found, const ElementHit& expected, const std::string& what) {
+  EXPECT_EQ(found.index, expected.index) << what;
   if (expected.hit()) {
     EXPECT_EQ(found.t, expected.t) << what;  // exact: same arithmetic
   }
@@ -43,7 +43,7 @@ std::string describe(const RayStreamOptions& o) {
 std::size_t checkModes(const Mesh& mesh, const std::vector<Ray>& rays,
                        const std::vector<float>& tMax, std::uint32_t imageWidth) {
   RayStream stream;
-  std::vector<MeshHit> expected(rays.size());
+  std::vector<ElementHit> expected(rays.size());
   std::size_t hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     stream.push(rays[i], tMax[i]);
@@ -64,7 +64,7 @@ std::size_t checkModes(const Mesh& mesh, const std::vector<Ray>& rays,
     for (std::size_t i = 0; i < rays.size(); ++i)
       expectSame(bvh.raycast(rays[i], tMax[i]), expected[i], "single ray " + std::to_string(i));
     for (const RayStreamOptions& options : modes) {
-      std::vector<MeshHit> found(rays.size());
+      std::vector<ElementHit> found(rays.size());
       bvh.raycast(stream, found, options);
       for (std::size_t i = 0; i < rays.size(); ++i)
         expectSame(found[i], expected[i], describe(options) + ", ray " + std::to_string(i));
@@ -162,21 +162,22 @@ TEST_P(MeshPacketsOnPath, LanesWithMinusInfinityTMaxHitNothing) {
       origin[k].push_back(camera.origin(k)[i]), direction[k].push_back(camera.direction(k)[i]);
     tMax.push_back(i % 3 == 1 ? -kInf : kInf);
   }
-  const simd::RaysView view{{origin[0].data(), origin[1].data(), origin[2].data()},
-                            {direction[0].data(), direction[1].data(), direction[2].data()},
-                            tMax.data(),
-                            camera.size()};
+  const simd::RaysView view{
+      {origin[0].data(), origin[1].data(), origin[2].data(), direction[0].data(),
+       direction[1].data(), direction[2].data(), tMax.data()},
+      camera.size(),
+      camera.size()};
   std::vector<std::uint32_t> index(camera.size());
   for (std::uint32_t i = 0; i < index.size(); ++i) index[i] = i;
   const simd::MeshView meshView{bvh.bvh().nodes().data(), bvh.bvh().nodes().size(),
                                 bvh.blocks().data()};
   for (int width : {8, 16}) {
-    std::vector<MeshHit> found(camera.size());
+    std::vector<ElementHit> found(camera.size());
     simd::meshClosestHitPackets(meshView, view, index.data(), index.size() / width, width,
                                 found.data());
     std::size_t hits = 0;
     for (std::size_t i = 0; i < camera.size(); ++i) {
-      const MeshHit expected = tMax[i] < 0 ? MeshHit{} : test::bruteRaycast(mesh, camera[i]);
+      const ElementHit expected = tMax[i] < 0 ? ElementHit{} : test::bruteRaycast(mesh, camera[i]);
       expectSame(found[i], expected,
                  "width " + std::to_string(width) + ", ray " + std::to_string(i));
       hits += expected.hit();
@@ -196,11 +197,12 @@ TEST_P(MeshPacketsOnPath, EmptyMeshMissesEveryRay) {
   for (const RayStreamOptions& options :
        {RayStreamOptions{Mode::kSingle, 0, 0}, RayStreamOptions{Mode::kAuto, 0, 0},
         RayStreamOptions{Mode::kPackets, 8, 0}}) {
-    std::vector<MeshHit> found(rays.size(), MeshHit{0, 0});  // not a miss: must be overwritten
+    std::vector<ElementHit> found(rays.size(),
+                                  ElementHit{0, 0});  // not a miss: must be overwritten
     bvh.raycast(stream, found, options);
     for (std::size_t i = 0; i < rays.size(); ++i)
-      expectSame(found[i], MeshHit{}, describe(options) + ", ray " + std::to_string(i));
-    std::vector<MeshHit> none;
+      expectSame(found[i], ElementHit{}, describe(options) + ", ray " + std::to_string(i));
+    std::vector<ElementHit> none;
     EXPECT_NO_THROW(bvh.raycast(RayStream{}, none, options));
   }
 }
@@ -209,7 +211,7 @@ TEST(MeshPacketErrors, BadPacketSizeIsRejected) {
   const MeshBvh bvh(scenes::makeHeightfield(5));
   RayStream s;
   s.push({{0, 1, 0}, {0, -1, 0}});
-  std::vector<MeshHit> out(1);
+  std::vector<ElementHit> out(1);
   test::expectError(
       [&] {
         bvh.raycast(s, out, {Mode::kPackets, 4, 0});

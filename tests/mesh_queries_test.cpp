@@ -59,14 +59,14 @@ TEST(MeshQueries, SegmentsEqualBruteForceOnEveryPath) {
   const Mesh soup = test::randomSoup(52, 2000, 30, 4);
   scenes::Random r(53);
   std::vector<Segment> segments;
-  std::vector<MeshHit> expected;
+  std::vector<ElementHit> expected;
   std::vector<bool> crosses;
   for (int i = 0; i < 1500; ++i) {
     const Vec3f a(r.uniform(-35, 35), r.uniform(-35, 35), r.uniform(-35, 35));
     const Vec3f b = a + r.uniform(0, 20) * r.unitDirection();
     const Segment s{a, b};
     // Brute force: raycast.hpp's linecast per triangle (t a distance), the same rule.
-    std::vector<MeshHit> hits;
+    std::vector<ElementHit> hits;
     for (std::uint32_t k = 0; k < soup.size(); ++k)
       if (auto h = linecast(soup.triangle(k), s)) hits.push_back({k, h->t});
     bool any = false;
@@ -77,8 +77,8 @@ TEST(MeshQueries, SegmentsEqualBruteForceOnEveryPath) {
   test::forEveryPath([&] {
     const MeshBvh bvh(soup);
     for (std::size_t i = 0; i < segments.size(); ++i) {
-      const MeshHit found = bvh.linecast(segments[i]);
-      EXPECT_EQ(found.id, expected[i].id) << "segment " << i;
+      const ElementHit found = bvh.linecast(segments[i]);
+      EXPECT_EQ(found.index, expected[i].index) << "segment " << i;
       // t: the tree's t (in units of b - a) times the length, against the per-triangle
       // linecast's same product: exact.
       if (expected[i].hit()) {
@@ -148,7 +148,7 @@ TEST(MeshQueries, RefitAnswersLikeARebuildOnEveryPath) {
   for (Vec3f& v : moved) v.y() = 2 * v.y() + 0.1f * v.x() - 5;
   mesh.vertices = moved;
   const RayStream rays = scenes::makeIncoherentRays(3000);
-  std::vector<MeshHit> expected;
+  std::vector<ElementHit> expected;
   for (std::size_t i = 0; i < rays.size(); ++i)
     expected.push_back(test::bruteRaycast(mesh, rays[i]));
   const Sphere s{{10, 0, 10}, 8};
@@ -158,9 +158,9 @@ TEST(MeshQueries, RefitAnswersLikeARebuildOnEveryPath) {
     bvh.refit(moved);
     const MeshBvh rebuilt(mesh);
     for (std::size_t i = 0; i < rays.size(); ++i) {
-      const MeshHit a = bvh.raycast(rays[i]), b = rebuilt.raycast(rays[i]);
-      EXPECT_EQ(a.id, expected[i].id) << "ray " << i;
-      EXPECT_EQ(b.id, expected[i].id) << "ray " << i;
+      const ElementHit a = bvh.raycast(rays[i]), b = rebuilt.raycast(rays[i]);
+      EXPECT_EQ(a.index, expected[i].index) << "ray " << i;
+      EXPECT_EQ(b.index, expected[i].index) << "ray " << i;
       if (expected[i].hit()) {
         EXPECT_EQ(a.t, expected[i].t) << "ray " << i;
       }

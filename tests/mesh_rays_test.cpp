@@ -16,8 +16,8 @@ namespace {
 
 using test::OnEveryPath;
 
-void expectSame(const MeshHit& found, const MeshHit& expected, const std::string& what) {
-  EXPECT_EQ(found.id, expected.id) << what;
+void expectSame(const ElementHit& found, const ElementHit& expected, const std::string& what) {
+  EXPECT_EQ(found.index, expected.index) << what;
   if (expected.hit()) {
     EXPECT_EQ(found.t, expected.t) << what;  // exact: same arithmetic
   }
@@ -27,7 +27,7 @@ void expectSame(const MeshHit& found, const MeshHit& expected, const std::string
 // (brute force, which depends on no path, is computed once).
 void checkAgainstBruteForce(const Mesh& mesh, const std::vector<Ray>& rays, float tMax) {
   RayStream stream;
-  std::vector<MeshHit> expected(rays.size());
+  std::vector<ElementHit> expected(rays.size());
   std::size_t hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     stream.push(rays[i], tMax);
@@ -39,7 +39,7 @@ void checkAgainstBruteForce(const Mesh& mesh, const std::vector<Ray>& rays, floa
   EXPECT_LT(hits, rays.size());
   test::forEveryPath([&] {
     const MeshBvh bvh(mesh);
-    std::vector<MeshHit> streamed(rays.size());
+    std::vector<ElementHit> streamed(rays.size());
     bvh.raycast(stream, streamed);
     std::vector<std::uint8_t> occluded(rays.size());
     bvh.occluded(stream, occluded);
@@ -88,8 +88,8 @@ TEST_P(MeshRaysOnPath, TiesGoToTheSmallerId) {
   for (int copy = 0; copy < 20; ++copy) m.triangles.push_back({1, 3, 5});
   const MeshBvh bvh(m);
   // Through the fan's centre: every fan triangle is hit at t = 2 exactly.
-  const MeshHit centre = bvh.raycast({{0, 2, 0}, {0, -1, 0}});
-  EXPECT_EQ(centre.id, 0u);
+  const ElementHit centre = bvh.raycast({{0, 2, 0}, {0, -1, 0}});
+  EXPECT_EQ(centre.index, 0u);
   EXPECT_EQ(centre.t, 2.0f);
   // Inside the copied triangle (and fan triangles 1..4 beneath it, coplanar): the smallest id.
   const Vec3f inside = (m.vertices[1] + m.vertices[3] + m.vertices[5]) / 3;
@@ -120,12 +120,12 @@ TEST(MeshRays, RaysAtSharedVerticesAndEdgesNeverMissOnEveryPath) {
       }
     }
   EXPECT_EQ(rays.size(), std::size_t(6 * (g - 2) * (g - 2)));
-  std::vector<MeshHit> expected;
+  std::vector<ElementHit> expected;
   for (const Ray& ray : rays) expected.push_back(test::bruteRaycast(mesh, ray));
   test::forEveryPath([&] {
     const MeshBvh bvh(mesh);
     for (std::size_t i = 0; i < rays.size(); ++i) {
-      const MeshHit h = bvh.raycast(rays[i]);
+      const ElementHit h = bvh.raycast(rays[i]);
       ASSERT_TRUE(h.hit()) << "missed ray " << i << " from " << rays[i].origin.transpose();
       expectSame(h, expected[i], "aimed ray");
     }
@@ -147,13 +147,13 @@ TEST(MeshRays, W2FiguresAndDoubleReferenceOnEveryPath) {
     const std::vector<scenes::ReferenceHit> reference =
         scenes::referenceHits(mesh, scenes::kRaysGrid, sample);
     test::forEveryPath([&] {
-      std::vector<MeshHit> hits(rays.size());
+      std::vector<ElementHit> hits(rays.size());
       bvh.raycast(rays, hits);
       const scenes::RaysReference found = scenes::summarise(hits);
       EXPECT_EQ(found.hits, figures.hits);
       // The figure has 8 significant digits.
       EXPECT_NEAR(found.sumT, figures.sumT, scenes::kSumTTolerance * figures.sumT);
-      std::vector<MeshHit> sampleHits;
+      std::vector<ElementHit> sampleHits;
       for (std::size_t i : sampled) sampleHits.push_back(hits[i]);
       const auto c = scenes::compareWithReference(sampleHits, reference);
       // W2: rays may differ from the double reference only where its hit is within 1e-5 of an
@@ -179,7 +179,7 @@ TEST(MeshRayErrors, BadRaysAreRejected) {
   RayStream s;
   s.push({{0, 1, 0}, {0, 1, 0}});
   test::expectError([&] { s.push({{0, 1, 0}, {0, INFINITY, 0}}); }, "RayStream::push: element 1");
-  std::vector<MeshHit> out(2);
+  std::vector<ElementHit> out(2);
   test::expectError([&] { bvh.raycast(s, out); }, "2 hits for 1 rays");
 }
 

@@ -149,7 +149,7 @@ TEST_P(RangeScene, LinecastAcrossTheRange) {
                    {5e17f, -kRange, kRange}},
                   {{0, 1, 2}, {0, 2, 3}}};
   const MeshBvh bvh(wall);
-  const MeshHit h = bvh.linecast(Segment{{-kRange, 3e17f, -2e17f}, {kRange, 3e17f, -2e17f}});
+  const ElementHit h = bvh.linecast(Segment{{-kRange, 3e17f, -2e17f}, {kRange, 3e17f, -2e17f}});
   ASSERT_TRUE(h.hit());
   // t = 0.75 of the segment (a few roundings of the watertight test, each 2^-24 relative) times
   // its length 2e18 (exact): 4 ulp of the answer.
@@ -157,7 +157,7 @@ TEST_P(RangeScene, LinecastAcrossTheRange) {
   EXPECT_TRUE(bvh.linetest(Segment{{-kRange, 3e17f, -2e17f}, {kRange, 3e17f, -2e17f}}));
   EXPECT_FALSE(bvh.linecast(Segment{{-kRange, 3e17f, -2e17f}, {4e17f, 3e17f, -2e17f}}).hit());
   // Along the diagonal of the range: it crosses x = 5e17 at 0.75 of its length, 0.75 * 2e18 sqrt 3.
-  const MeshHit d = bvh.linecast(Segment{Vec3f::Constant(-kRange), Vec3f::Constant(kRange)});
+  const ElementHit d = bvh.linecast(Segment{Vec3f::Constant(-kRange), Vec3f::Constant(kRange)});
   ASSERT_TRUE(d.hit());
   const float want = float(0.75 * 2e18 * std::sqrt(3.0));
   // The length sqrt(3) 2e18 adds a rounding of its own: 8 ulp.

@@ -243,9 +243,9 @@ TEST_P(RangeBatch, RaycastsRejectANegativeOrNaNTMax) {
     expectError([&] { (void)raycast(ray, triangles, tMax); }, "raycast: tMax");
   }
   // tMax = 0 and +inf are valid: the ray starts outside, so 0 misses and inf hits.
-  EXPECT_FALSE(raycast(ray, boxes, 0.0f));
-  ASSERT_TRUE(raycast(ray, spheres, kInf));
-  EXPECT_EQ(raycast(ray, spheres, kInf)->t, 2);
+  EXPECT_FALSE(raycast(ray, boxes, 0.0f).hit());
+  ASSERT_TRUE(raycast(ray, spheres, kInf).hit());
+  EXPECT_EQ(raycast(ray, spheres, kInf).t, 2);
   // Out-of-range rays are rejected like the streams' elements.
   expectError(
       [&] {
@@ -392,28 +392,28 @@ TEST_P(RangeBatch, CirclesAndOrientedRectanglesAtTheEdgesOfTheRange) {
 TEST_P(RangeBatch, SphereRaycastsFromTheEdgeOfTheRange) {
   SphereStream unit;
   unit.push({{0, 0, 0}, 1});
-  const auto hit = raycast(Ray{{-kMax, 0, 0}, {1, 0, 0}}, unit);
-  ASSERT_TRUE(hit);
-  EXPECT_LE(relativeError(hit->t, double(kMax) - 1), 2 * kEps);
-  EXPECT_FALSE(raycast(Ray{{-kMax, 2, 0}, {1, 0, 0}}, unit));  // passes 2 from the centre
+  const ElementHit hit = raycast(Ray{{-kMax, 0, 0}, {1, 0, 0}}, unit);
+  ASSERT_TRUE(hit.hit());
+  EXPECT_LE(relativeError(hit.t, double(kMax) - 1), 2 * kEps);
+  EXPECT_FALSE(raycast(Ray{{-kMax, 2, 0}, {1, 0, 0}}, unit).hit());  // passes 2 from the centre
   // Corner to corner: t = |c - o| - r exactly, 3.03e18 - 2.5e17, within 4 eps (|e|^2 and the
   // quotient add a few roundings more than along an axis).
   SphereStream far;
   far.push({{0.75e18f, 0.75e18f, 0.75e18f}, 0.25e18f});
   const float k = 1 / std::sqrt(3.0f);
   const Ray diagonal{{-kMax, -kMax, -kMax}, {k, k, k}};
-  const auto corner = raycast(diagonal, far);
-  ASSERT_TRUE(corner);
-  EXPECT_LE(relativeError(corner->t, 1.75e18 * std::sqrt(3.0) - 0.25e18), 4 * kEps);
+  const ElementHit corner = raycast(diagonal, far);
+  ASSERT_TRUE(corner.hit());
+  EXPECT_LE(relativeError(corner.t, 1.75e18 * std::sqrt(3.0) - 0.25e18), 4 * kEps);
   // The batch is the scalar function, bit for bit, on every path.
   const auto scalar = raycast(far[0], diagonal);
   ASSERT_TRUE(scalar);
-  EXPECT_EQ(corner->t, scalar->t);
+  EXPECT_EQ(corner.t, scalar->t);
   BoxStream boxes;
   boxes.push({{0.8e18f, 0.8e18f, 0.8e18f}, {kMax, kMax, kMax}});
-  const auto box = raycast(diagonal, boxes);
-  ASSERT_TRUE(box);
-  EXPECT_LE(relativeError(box->t, 1.8e18 * std::sqrt(3.0)), 4 * kEps);  // enters at the corner
+  const ElementHit box = raycast(diagonal, boxes);
+  ASSERT_TRUE(box.hit());
+  EXPECT_LE(relativeError(box.t, 1.8e18 * std::sqrt(3.0)), 4 * kEps);  // enters at the corner
 }
 
 // GJK and EPA at the edges: their areas and volumes are products of up to four lengths, which

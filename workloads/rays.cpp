@@ -58,10 +58,10 @@ RayStream makeIncoherentRays(std::size_t n) {
   return rays;
 }
 
-RaysReference summarise(std::span<const MeshHit> hits) {
+RaysReference summarise(std::span<const ElementHit> hits) {
   RaysReference s{0, 0, 0};
-  for (const MeshHit& h : hits)
-    if (h.hit()) ++s.hits, s.sumT += double(h.t), s.sumId += h.id;
+  for (const ElementHit& h : hits)
+    if (h.hit()) ++s.hits, s.sumT += double(h.t), s.sumId += h.index;
   return s;
 }
 
@@ -167,13 +167,13 @@ std::vector<ReferenceHit> referenceHits(const Mesh& mesh, std::uint32_t g, const
   return out;
 }
 
-ReferenceComparison compareWithReference(std::span<const MeshHit> hits,
+ReferenceComparison compareWithReference(std::span<const ElementHit> hits,
                                          std::span<const ReferenceHit> reference) {
   ReferenceComparison c;
   for (std::size_t i = 0; i < hits.size(); ++i) {
-    const MeshHit& h = hits[i];
+    const ElementHit& h = hits[i];
     const ReferenceHit& r = reference[i];
-    if (h.id == r.id) {
+    if (h.index == r.id) {
       if (h.hit()) c.maxRelativeT = std::max(c.maxRelativeT, std::abs(double(h.t) - r.t) / r.t);
       continue;
     }

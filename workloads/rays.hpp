@@ -39,7 +39,7 @@ inline constexpr RaysReference kIncoherentReference{295'892, 1.5857945e7, 77'579
 inline constexpr double kSumTTolerance = 1e-7;
 
 // The figures of a set of hits: hits, sum of t (in double), sum of ids (64 bits).
-RaysReference summarise(std::span<const MeshHit> hits);
+RaysReference summarise(std::span<const ElementHit> hits);
 
 // A ray's hit from the double-precision walk: its t, the triangle, and the distance of the hit
 // point from the triangle's nearest edge (W2 excuses a disagreement when it is below 1e-5).
@@ -62,7 +62,7 @@ struct ReferenceComparison {
   std::size_t differ = 0, excused = 0;
   double maxRelativeT = 0;
 };
-ReferenceComparison compareWithReference(std::span<const MeshHit> hits,
+ReferenceComparison compareWithReference(std::span<const ElementHit> hits,
                                          std::span<const ReferenceHit> reference);
 
 }  // namespace simdphys::scenes

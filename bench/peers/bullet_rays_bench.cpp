@@ -24,7 +24,7 @@ class ClosestTriangle : public btTriangleRaycastCallback {
       best_ = fraction, id_ = std::uint32_t(triangle);
     return best_;  // later triangles need only be tested up to the closest so far
   }
-  MeshHit hit() const { return id_ == kNoHit ? MeshHit{} : MeshHit{id_, best_ * kLength}; }
+  ElementHit hit() const { return id_ == kNoHit ? ElementHit{} : ElementHit{id_, best_ * kLength}; }
 
  private:
   btScalar best_ = 1;
@@ -68,7 +68,7 @@ void registerBulletRays() {
                  [kind](benchmark::State& state) {
                    const RaySet& set = raySet(kind);
                    btBvhTriangleMeshShape& shape = builtMesh().shape();
-                   std::vector<MeshHit> hits(set.rays.size());
+                   std::vector<ElementHit> hits(set.rays.size());
                    for (auto _ : state) {
 #pragma omp parallel for schedule(dynamic, 256)
                      for (std::int64_t j = 0; j < std::int64_t(set.rays.size()); ++j) {

@@ -94,15 +94,16 @@ RTCRayHit rayHit(const RayStream& rays, std::size_t i) {
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   return rh;
 }
-MeshHit meshHit(const RTCRayHit& rh) {
-  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? MeshHit{} : MeshHit{rh.hit.primID, rh.ray.tfar};
+ElementHit meshHit(const RTCRayHit& rh) {
+  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? ElementHit{}
+                                                  : ElementHit{rh.hit.primID, rh.ray.tfar};
 }
 
 using Intersect = void (*)(RTCScene, RTCIntersectContextFlags, const RayStream&,
-                           std::vector<MeshHit>&);
+                           std::vector<ElementHit>&);
 
 void intersect1(RTCScene scene, RTCIntersectContextFlags flags, const RayStream& rays,
-                std::vector<MeshHit>& hits) {
+                std::vector<ElementHit>& hits) {
   RTCIntersectContext c = context(flags);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t j = 0; j < std::int64_t(rays.size()); ++j) {
@@ -116,7 +117,7 @@ void intersect1(RTCScene scene, RTCIntersectContextFlags flags, const RayStream&
 // MeshBvh::raycast on a stream. Filling its ray structures is timed, as in intersect1 (simdphys
 // reads its own stream as given).
 void intersect1M(RTCScene scene, RTCIntersectContextFlags flags, const RayStream& rays,
-                 std::vector<MeshHit>& hits) {
+                 std::vector<ElementHit>& hits) {
   constexpr std::int64_t kCall = 4096;
   RTCIntersectContext c = context(flags);
   const std::int64_t n = std::int64_t(rays.size());
@@ -135,7 +136,7 @@ void intersect1M(RTCScene scene, RTCIntersectContextFlags flags, const RayStream
 template <int K, class Packet,
           void (*IntersectK)(const int*, RTCScene, RTCIntersectContext*, Packet*)>
 void intersectTiles(RTCScene scene, RTCIntersectContextFlags flags, const RayStream& rays,
-                    std::vector<MeshHit>& hits) {
+                    std::vector<ElementHit>& hits) {
   constexpr std::uint32_t w = scenes::kCameraWidth, h = scenes::kCameraHeight, rows = K / 4;
   static_assert(w % 4 == 0 && h % rows == 0);
   RTCIntersectContext c = context(flags);
@@ -161,8 +162,8 @@ void intersectTiles(RTCScene scene, RTCIntersectContextFlags flags, const RayStr
     IntersectK(valid, scene, &c, &p);
     for (int k = 0; k < K; ++k)
       hits[index[k]] = p.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID
-                           ? MeshHit{}
-                           : MeshHit{p.hit.primID[k], p.ray.tfar[k]};
+                           ? ElementHit{}
+                           : ElementHit{p.hit.primID[k], p.ray.tfar[k]};
   }
 }
 constexpr Intersect intersect8 = intersectTiles<8, RTCRayHit8, rtcIntersect8>;
@@ -179,7 +180,7 @@ void registerIntersect(RaysKind kind, const std::string& method, Intersect inter
                  [kind, intersect, flags, scene](benchmark::State& state) {
                    const RaySet& set = raySet(kind);
                    const RTCScene s = committedScene(scene);
-                   std::vector<MeshHit> hits(set.rays.size());
+                   std::vector<ElementHit> hits(set.rays.size());
                    for (auto _ : state) {
                      intersect(s, flags, set.rays, hits);
                      benchmark::DoNotOptimize(hits.data());

@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     std::vector<ModelHit> hits(rays.size());
     const double sceneRate = megaRaysPerSecond(rays.size(), [&] { scene.raycast(rays, hits); });
     const auto& terrain = std::get<std::shared_ptr<const MeshBvh>>(scene.model(0).shape);
-    std::vector<MeshHit> terrainHits(rays.size());
+    std::vector<ElementHit> terrainHits(rays.size());
     const double terrainRate =
         megaRaysPerSecond(rays.size(), [&] { terrain->raycast(rays, terrainHits); });
 

@@ -1,10 +1,10 @@
-// The BVH's plain types, without Eigen: the node, a mesh leaf's block of triangles and a mesh
-// hit. Part of the API (bvh.hpp and mesh_bvh.hpp include it) and the one public header the SIMD
-// kernels read (simd/bvh_*.cpp), so the kernels compile no Eigen.
+// The BVH's plain types, without Eigen: the node, a mesh leaf's block of triangles and the window
+// within which two mesh hits tie (the hit itself is core.hpp's ElementHit). Part of the API
+// (bvh.hpp and mesh_bvh.hpp include it) and the one public header the SIMD kernels read
+// (simd/bvh_*.cpp), so the kernels compile no Eigen.
 #pragma once
 
 #include <cstdint>
-#include <limits>
 
 namespace simdphys {
 
@@ -39,15 +39,7 @@ struct alignas(64) TriangleBlock {
   std::uint32_t id[kWidth];
 };
 
-inline constexpr std::uint32_t kNoHit = ~0u;
 // Relative window within which two hits tie (W2): t <= tMin * kTieWindow.
 inline constexpr float kTieWindow = 1.0f + 1e-6f;
-
-// A ray's closest triangle of a mesh (mesh_bvh.hpp's rule).
-struct MeshHit {
-  std::uint32_t id = kNoHit;  // the triangle's index in the mesh, kNoHit for a miss
-  float t = std::numeric_limits<float>::infinity();
-  bool hit() const { return id != kNoHit; }
-};
 
 }  // namespace simdphys

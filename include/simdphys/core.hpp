@@ -5,6 +5,7 @@
 #include <compare>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <new>
 #include <span>
 #include <stdexcept>
@@ -26,6 +27,18 @@ struct Pair {
   std::uint32_t a, b;
   friend bool operator==(const Pair&, const Pair&) = default;
   friend auto operator<=>(const Pair&, const Pair&) = default;
+};
+
+// The index of no element: an ElementHit's (or ModelHit::triangle's) miss.
+inline constexpr std::uint32_t kNoHit = ~0u;
+
+// The first element a ray hits in a stream or a mesh (its index there: a box, a sphere, a
+// triangle) and the distance along the ray: what the closest-hit queries answer
+// (geometry3d/batch.hpp, mesh_bvh.hpp) on every path. A miss is index kNoHit, t = +inf.
+struct ElementHit {
+  std::uint32_t index = kNoHit;
+  float t = std::numeric_limits<float>::infinity();
+  bool hit() const { return index != kNoHit; }
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -81,19 +81,19 @@ class MeshBvh {
   void refit(std::span<const Vec3f> vertices);
 
   // Closest hit with t in [0, tMax] (the rule above), or a miss.
-  MeshHit raycast(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
+  ElementHit raycast(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
   // Whether any triangle is hit with t in [0, tMax]; stops at the first found.
   bool occluded(const Ray& ray, float tMax = std::numeric_limits<float>::infinity()) const;
   // For every ray of the stream, its closest hit (out.size() == rays.size()). The reference path
   // traces one ray at a time whatever the options.
-  void raycast(const RayStream& rays, std::span<MeshHit> out,
+  void raycast(const RayStream& rays, std::span<ElementHit> out,
                const RayStreamOptions& options = {}) const;
   // For every ray, whether it hits anything (1) or not (0).
   void occluded(const RayStream& rays, std::span<std::uint8_t> out) const;
 
   // The closest hit along the segment, t the distance from its start (raycast.hpp's linecast),
   // and whether the closed segment meets any triangle (linetest).
-  MeshHit linecast(const Segment& segment) const;
+  ElementHit linecast(const Segment& segment) const;
   bool linetest(const Segment& segment) const;
 
   // Ids of the triangles the shape intersects (intersect.hpp's tests, closed), ascending. Throws

@@ -24,20 +24,18 @@ simd::RayQuery query(const Ray& r, float tMax) {
 }
 
 template <class Stream, class Kernel>
-std::optional<StreamHit> closest(const Ray& ray, const Stream& stream, float tMax, Kernel kernel) {
+ElementHit closest(const Ray& ray, const Stream& stream, float tMax, Kernel kernel) {
   validate(ray, "raycast");
   if (!(tMax >= 0))  // as MeshBvh's: +inf is fine, NaN or negative is a caller's bug
     throw Error("raycast: tMax " + std::to_string(tMax) + " is negative or NaN");
   if (referencePathActive()) {
-    std::optional<StreamHit> best;
+    ElementHit best;
     for (std::uint32_t i = 0; i < stream.size(); ++i)
-      if (auto hit = raycast(stream[i], ray, tMax); hit && (!best || hit->t < best->t))
-        best = StreamHit{i, hit->t};
+      if (auto hit = raycast(stream[i], ray, tMax); hit && (!best.hit() || hit->t < best.t))
+        best = {i, hit->t};
     return best;
   }
-  const simd::StreamHit hit = kernel(query(ray, tMax), view(stream));
-  if (hit.index == simd::kNoHit) return std::nullopt;
-  return StreamHit{hit.index, hit.t};
+  return kernel(query(ray, tMax), view(stream));
 }
 
 }  // namespace
@@ -85,15 +83,15 @@ void closestPoints(const Vec3f& p, const BoxStream& boxes, PointStream& out) {
   });
 }
 
-std::optional<StreamHit> raycast(const Ray& ray, const BoxStream& boxes, float tMax) {
+ElementHit raycast(const Ray& ray, const BoxStream& boxes, float tMax) {
   return closest(ray, boxes, tMax, simd::rayClosestBox);
 }
 
-std::optional<StreamHit> raycast(const Ray& ray, const SphereStream& spheres, float tMax) {
+ElementHit raycast(const Ray& ray, const SphereStream& spheres, float tMax) {
   return closest(ray, spheres, tMax, simd::rayClosestSphere);
 }
 
-std::optional<StreamHit> raycast(const Ray& ray, const TriangleStream& triangles, float tMax) {
+ElementHit raycast(const Ray& ray, const TriangleStream& triangles, float tMax) {
   return closest(ray, triangles, tMax, [](const simd::RayQuery& q, const simd::TrianglesView& v) {
     const WatertightRay w(Vec3f(q.ox, q.oy, q.oz), Vec3f(q.dx, q.dy, q.dz));
     return simd::rayClosestTriangle({q.ox, q.oy, q.oz, w.kx, w.ky, w.kz, w.sx, w.sy, w.sz, q.tMax},

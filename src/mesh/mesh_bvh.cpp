@@ -64,8 +64,8 @@ class RayCore {
   Sink& sink_;
 };
 
-MeshHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
-                   const detail::TraversalRay& ray) {
+ElementHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
+                      const detail::TraversalRay& ray) {
   Closest closest(ray.tMax);
   RayCore<Closest> core(blocks, ray, closest);
   traverseRay(bvh.nodes().data(), bvh.nodes().size(), core);
@@ -105,7 +105,7 @@ template <class Kernel>
 void withRaysView(const Ray& ray, const float& tMax, Kernel kernel) {
   const float o[3] = {ray.origin.x(), ray.origin.y(), ray.origin.z()};
   const float d[3] = {ray.direction.x(), ray.direction.y(), ray.direction.z()};
-  kernel(simd::RaysView{{o, o + 1, o + 2}, {d, d + 1, d + 2}, &tMax, 1});
+  kernel(simd::RaysView{{o, o + 1, o + 2, d, d + 1, d + 2, &tMax}, 1, 1});
 }
 
 detail::TraversalRay traversal(const Ray& r, float tMax) {
@@ -124,12 +124,12 @@ Ray RayStream::operator[](std::size_t i) const {
   return {{value(0, i), value(1, i), value(2, i)}, {value(3, i), value(4, i), value(5, i)}};
 }
 
-MeshHit MeshBvh::raycast(const Ray& ray, float tMax) const {
+ElementHit MeshBvh::raycast(const Ray& ray, float tMax) const {
   validateRay(ray, tMax, "MeshBvh::raycast");
   if (referencePathActive()) return reference::closestHit(bvh_, blocks_, traversal(ray, tMax));
-  MeshHit h;
+  ElementHit h;
   withRaysView(ray, tMax, [&](const simd::RaysView& v) {
-    simd::meshClosestHits(meshView(bvh_, blocks_), v, &h.id, &h.t);
+    simd::meshClosestHits(meshView(bvh_, blocks_), v, &h.index, &h.t);
   });
   return h;
 }
@@ -178,11 +178,11 @@ void requireInReach(const Aabb& bounds, const char* where) {
 
 // raycast.hpp's linecast: the ray from start along end - start (not normalised) up to t = 1, then
 // t turned into a distance. A point-like segment crosses nothing.
-MeshHit MeshBvh::linecast(const Segment& s) const {
+ElementHit MeshBvh::linecast(const Segment& s) const {
   validate(s, "MeshBvh::linecast");
   requireInReach(boundsOf(s), "MeshBvh::linecast");
   if (detail::rays::isPointSegment(s)) return {};
-  MeshHit h = raycast(Ray{s.start, s.direction()}, 1.0f);
+  ElementHit h = raycast(Ray{s.start, s.direction()}, 1.0f);
   if (h.hit()) h.t *= s.length();
   return h;
 }

@@ -12,8 +12,8 @@ namespace simdphys {
 
 namespace reference {
 // The SIMD traversal's algorithm with a scalar core (mesh_bvh.cpp).
-MeshHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
-                   const detail::TraversalRay& ray);
+ElementHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
+                      const detail::TraversalRay& ray);
 bool anyHit(const Bvh& bvh, std::span<const TriangleBlock> blocks, const detail::TraversalRay& ray);
 }  // namespace reference
 

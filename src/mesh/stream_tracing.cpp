@@ -6,6 +6,7 @@
 
 #include "src/core/radix_sort.hpp"
 #include "src/mesh/mesh_internal.hpp"
+#include "src/views.hpp"
 
 namespace simdphys {
 namespace {
@@ -16,19 +17,12 @@ constexpr std::size_t kChunk = 256;
 // Below this many single rays, ordering them costs more than the cache misses it saves.
 constexpr std::size_t kOrderFrom = 4096;
 
-simd::RaysView chunk(const RayStream& rays, std::size_t begin) {
-  simd::RaysView v{};
-  for (int k = 0; k < 3; ++k)
-    v.origin[k] = rays.origin(k).data() + begin, v.direction[k] = rays.direction(k).data() + begin;
-  v.tMax = rays.tMax().data() + begin;
-  v.count = std::min(kChunk, rays.size() - begin);
-  return v;
-}
-
-simd::RaysView whole(const RayStream& rays) {
-  simd::RaysView v = chunk(rays, 0);
-  v.count = rays.size();
-  return v;
+// The chunk of `rays` from `begin` as a view of its own: the mesh kernels read ray by ray, so it
+// needs no padding (padded = count).
+simd::RaysView chunk(simd::RaysView rays, std::size_t begin) {
+  for (const float*& f : rays.field) f += begin;
+  rays.count = rays.padded = std::min(kChunk, rays.count - begin);
+  return rays;
 }
 
 int octant(const RayStream& rays, std::size_t i) {
@@ -56,9 +50,9 @@ bool sameOctant(const RayStream& rays, const std::uint32_t* lanes, std::size_t n
 // a large mesh would miss the cache at nearly every node (Pharr et al.'s memory-coherent ray
 // tracing; Moon et al. sort on a hit point estimate). docs/bvh.md has the measurements.
 void traceSingles(const MeshBvh& bvh, const RayStream& rays,
-                  const std::vector<std::uint32_t>& index, std::span<MeshHit> out) {
+                  const std::vector<std::uint32_t>& index, std::span<ElementHit> out) {
   const simd::MeshView mesh = meshView(bvh.bvh(), bvh.blocks());
-  const simd::RaysView all = whole(rays);
+  const simd::RaysView all = view(rays);
   const std::size_t n = index.size();
   const auto chunks = [](std::size_t count) { return std::int64_t((count + kChunk - 1) / kChunk); };
   if (n < kOrderFrom) {
@@ -80,7 +74,7 @@ void traceSingles(const MeshBvh& bvh, const RayStream& rays,
   // The entering rays as records (read in stream order), so that reordering them moves one cache
   // line a ray rather than gathering seven fields from seven places.
   struct Record {
-    float field[7];  // origin, direction, tMax
+    float field[fields::Ray::kCount];  // origin, direction, tMax
     std::uint32_t index;
   };
   std::vector<Record> entering;
@@ -89,12 +83,11 @@ void traceSingles(const MeshBvh& bvh, const RayStream& rays,
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t i = index[k];
     if (keys[k] == simd::kMissKey) {
-      out[i] = MeshHit{};
+      out[i] = ElementHit{};
       continue;
     }
-    entering.push_back({{all.origin[0][i], all.origin[1][i], all.origin[2][i], all.direction[0][i],
-                         all.direction[1][i], all.direction[2][i], all.tMax[i]},
-                        i});
+    Record& r = entering.emplace_back(Record{{}, i});
+    for (std::size_t f = 0; f < fields::Ray::kCount; ++f) r.field[f] = all[f][i];
     enteringKeys.push_back(keys[k]);
   }
   RadixSorter sorter;
@@ -106,13 +99,12 @@ void traceSingles(const MeshBvh& bvh, const RayStream& rays,
   const auto field = [&](int f) { return sorted.data() + f * m; };
   for (std::size_t k = 0; k < m; ++k)
     for (int f = 0; f < 7; ++f) field(f)[k] = entering[order[k]].field[f];
+  simd::RaysView sortedRays{{}, m, m};
+  for (std::size_t f = 0; f < fields::Ray::kCount; ++f) sortedRays.field[f] = field(int(f));
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t c = 0; c < chunks(m); ++c) {
     const std::size_t begin = std::size_t(c) * kChunk;
-    const simd::RaysView v{{field(0) + begin, field(1) + begin, field(2) + begin},
-                           {field(3) + begin, field(4) + begin, field(5) + begin},
-                           field(6) + begin,
-                           std::min(kChunk, m - begin)};
+    const simd::RaysView v = chunk(sortedRays, begin);
     simd::meshClosestHits(mesh, v, ids.data() + begin, field(7) + begin);
   }
   for (std::size_t k = 0; k < m; ++k) out[entering[order[k]].index] = {ids[k], field(7)[k]};
@@ -120,7 +112,7 @@ void traceSingles(const MeshBvh& bvh, const RayStream& rays,
 
 // Groups of rays (rows of the stream or tiles of its image) as packets; with kAuto, the groups
 // whose rays do not share an octant go to traceSingles instead.
-void tracePackets(const MeshBvh& bvh, const RayStream& rays, std::span<MeshHit> out,
+void tracePackets(const MeshBvh& bvh, const RayStream& rays, std::span<ElementHit> out,
                   const RayStreamOptions& options) {
   // 16 by default: measured faster than 8 on AVX-512 and AVX2, equal on SSE4 (docs/bvh.md).
   const std::uint32_t width = options.packetSize != 0 ? options.packetSize : 16;
@@ -160,7 +152,7 @@ void tracePackets(const MeshBvh& bvh, const RayStream& rays, std::span<MeshHit> 
       if (lanes[i] != simd::kAbsentLane) singles.push_back(lanes[i]);
   }
   const simd::MeshView mesh = meshView(bvh.bvh(), bvh.blocks());
-  const simd::RaysView all = whole(rays);
+  const simd::RaysView all = view(rays);
   const std::size_t perBatch = kChunk / width, count = packets.size() / width;
   const std::int64_t batches = std::int64_t((count + perBatch - 1) / perBatch);
 #pragma omp parallel for schedule(dynamic, 1)
@@ -174,7 +166,7 @@ void tracePackets(const MeshBvh& bvh, const RayStream& rays, std::span<MeshHit> 
 
 }  // namespace
 
-void MeshBvh::raycast(const RayStream& rays, std::span<MeshHit> out,
+void MeshBvh::raycast(const RayStream& rays, std::span<ElementHit> out,
                       const RayStreamOptions& options) const {
   if (out.size() != rays.size())
     throw Error("MeshBvh::raycast: " + std::to_string(out.size()) + " hits for " +
@@ -191,13 +183,10 @@ void MeshBvh::raycast(const RayStream& rays, std::span<MeshHit> out,
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t c = 0; c < chunks; ++c) {
     const std::size_t begin = std::size_t(c) * kChunk;
-    const simd::RaysView v = chunk(rays, begin);
+    const simd::RaysView v = chunk(view(rays), begin);
     if (ref) {
       for (std::size_t i = 0; i < v.count; ++i)
-        out[begin + i] = reference::closestHit(
-            bvh_, blocks_,
-            detail::traversalRay(v.origin[0][i], v.origin[1][i], v.origin[2][i], v.direction[0][i],
-                                 v.direction[1][i], v.direction[2][i], v.tMax[i]));
+        out[begin + i] = reference::closestHit(bvh_, blocks_, detail::traversalRay(v, i));
       continue;
     }
     std::uint32_t id[kChunk];
@@ -216,16 +205,13 @@ void MeshBvh::occluded(const RayStream& rays, std::span<std::uint8_t> out) const
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t c = 0; c < chunks; ++c) {
     const std::size_t begin = std::size_t(c) * kChunk;
-    const simd::RaysView v = chunk(rays, begin);
+    const simd::RaysView v = chunk(view(rays), begin);
     if (!ref) {
       simd::meshAnyHits(meshView(bvh_, blocks_), v, out.data() + begin);
       continue;
     }
     for (std::size_t i = 0; i < v.count; ++i)
-      out[begin + i] = reference::anyHit(
-          bvh_, blocks_,
-          detail::traversalRay(v.origin[0][i], v.origin[1][i], v.origin[2][i], v.direction[0][i],
-                               v.direction[1][i], v.direction[2][i], v.tMax[i]));
+      out[begin + i] = reference::anyHit(bvh_, blocks_, detail::traversalRay(v, i));
   }
 }
 

@@ -105,10 +105,10 @@ std::optional<ModelHit> raycast(const PlacedShape& placed, const Ray& ray, float
   const Ray local{transformPoint(inv, ray.origin), transformDirection(inv, ray.direction)};
   return std::visit(
       Overloaded{[&](const std::shared_ptr<const MeshBvh>& m) -> std::optional<ModelHit> {
-                   const MeshHit h = m->raycast(local, tMax);
+                   const ElementHit h = m->raycast(local, tMax);
                    if (!h.hit()) return std::nullopt;
-                   const Vec3f n = m->mesh().triangle(h.id).normal();
-                   return worldHit(placed, ray, h.t, n, h.id);
+                   const Vec3f n = m->mesh().triangle(h.index).normal();
+                   return worldHit(placed, ray, h.t, n, h.index);
                  },
                  [&](const auto& primitive) -> std::optional<ModelHit> {
                    const auto h = simdphys::raycast(primitive, local, tMax);

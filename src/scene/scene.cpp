@@ -34,8 +34,22 @@ Mat4f affineInverse(const Mat4f& m) {
   return inv;
 }
 
-bool overlaps(const Aabb& a, const Aabb& b) {
+// Whether a query's shape meets a model's world box (closed), and the box that holds every box
+// that passes: the BVH's candidates.
+bool meets(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+bool meets(const Sphere& sphere, const Aabb& box) { return intersects(sphere, box); }
+
+Aabb reach(const Aabb& box) { return box; }
+// The sphere test passes boxes up to its tolerance (16 eps of the distance and radius) beyond the
+// radius, and its float distance may round below the true one by an ulp of the centre: the reach
+// is wider than both.
+Aabb reach(const Sphere& sphere) {
+  const float pad = sphere.radius * 1e-5f +
+                    4 * std::numeric_limits<float>::epsilon() * sphere.center.cwiseAbs().maxCoeff();
+  return {sphere.center.array() - (sphere.radius + pad),
+          sphere.center.array() + (sphere.radius + pad)};
 }
 
 }  // namespace
@@ -198,44 +212,31 @@ void Scene::update() {
 
 // ---- queries ---------------------------------------------------------------------------------
 
-std::vector<std::uint32_t> Scene::query(const Sphere& sphere, SceneIndex via) const {
+template <class Shape>
+std::vector<std::uint32_t> Scene::select(const Shape& shape, SceneIndex via) const {
   requireUpToDate("Scene::query");
-  validate(sphere, "Scene::query");
+  validate(shape, "Scene::query");
+  if (via == SceneIndex::kOctree) return octree_.query(shape);
   std::vector<std::uint32_t> out;
-  if (via == SceneIndex::kOctree) return octree_.query(sphere);
   if (via == SceneIndex::kFlat) {
     for (std::uint32_t i = 0; i < size(); ++i)
-      if (intersects(sphere, bounds_[i])) out.push_back(i);
+      if (meets(shape, bounds_[i])) out.push_back(i);
     return out;
   }
-  // The sphere test passes boxes up to its tolerance (16 eps of the distance and radius) beyond
-  // the radius, and its float distance may round below the true one by an ulp of the centre: the
-  // candidate box is widened by more than both.
-  const float pad = sphere.radius * 1e-5f +
-                    4 * std::numeric_limits<float>::epsilon() * sphere.center.cwiseAbs().maxCoeff();
-  const Aabb reach{sphere.center.array() - (sphere.radius + pad),
-                   sphere.center.array() + (sphere.radius + pad)};
   std::vector<std::uint32_t> candidates;
-  bvh_.query(reach, candidates);
+  bvh_.query(reach(shape), candidates);
   for (std::uint32_t i : candidates)
-    if (intersects(sphere, bounds_[i])) out.push_back(i);
+    if (meets(shape, bounds_[i])) out.push_back(i);
   std::sort(out.begin(), out.end());
   return out;
 }
 
+std::vector<std::uint32_t> Scene::query(const Sphere& sphere, SceneIndex via) const {
+  return select(sphere, via);
+}
+
 std::vector<std::uint32_t> Scene::query(const Aabb& box, SceneIndex via) const {
-  requireUpToDate("Scene::query");
-  validate(box, "Scene::query");
-  std::vector<std::uint32_t> out;
-  if (via == SceneIndex::kOctree) return octree_.query(box);
-  if (via == SceneIndex::kFlat) {
-    for (std::uint32_t i = 0; i < size(); ++i)
-      if (overlaps(box, bounds_[i])) out.push_back(i);
-    return out;
-  }
-  bvh_.query(box, out);
-  std::sort(out.begin(), out.end());
-  return out;
+  return select(box, via);
 }
 
 std::size_t Scene::cull(const Frustum& frustum, std::vector<std::uint32_t>& visible,

@@ -142,7 +142,7 @@ void Scene::raycast(const RayStream& rays, std::span<ModelHit> out) const {
   const RaySlabs slabs(rays);
   std::vector<std::uint8_t> keep(rays.size());
   std::vector<std::uint32_t> candidates;
-  std::vector<MeshHit> meshHits;
+  std::vector<ElementHit> meshHits;
   ModelRays local;
   for (std::uint32_t m = 0; m < size(); ++m) {
     const PlacedShape shape = placed(m);
@@ -170,12 +170,13 @@ void Scene::raycast(const RayStream& rays, std::span<ModelHit> out) const {
       candidates.resize(rays.size());
       for (std::uint32_t i = 0; i < rays.size(); ++i) candidates[i] = i;
     }
-    meshHits.assign(candidates.size(), MeshHit{});
+    meshHits.assign(candidates.size(), ElementHit{});
     (*mesh)->raycast(whole ? rays : local, meshHits);
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       if (!meshHits[k].hit()) continue;
-      const Vec3f n = (*mesh)->mesh().triangle(meshHits[k].id).normal();
-      offer(candidates[k], worldHit(shape, rays[candidates[k]], meshHits[k].t, n, meshHits[k].id));
+      const Vec3f n = (*mesh)->mesh().triangle(meshHits[k].index).normal();
+      offer(candidates[k],
+            worldHit(shape, rays[candidates[k]], meshHits[k].t, n, meshHits[k].index));
     }
   }
 }

@@ -13,9 +13,7 @@ namespace simdphys {
 namespace {
 
 using Hit = std::optional<std::pair<std::uint32_t, std::uint32_t>>;
-Hit key(const std::optional<StreamHit>& h) {
-  return h ? Hit({h->index, fuzz::bitsOf(h->t)}) : std::nullopt;
-}
+Hit key(const ElementHit& h) { return h.hit() ? Hit({h.index, fuzz::bitsOf(h.t)}) : std::nullopt; }
 
 // Mostly valid elements (corners sorted, sizes non-negative); sometimes as decoded, which the
 // stream must reject with an Error.
@@ -55,8 +53,8 @@ std::string describe(const Ray& r, float tMax, const Stream& s) {
         << ")";
   }
   ScopedPath p("reference");
-  if (const auto h = raycast(r, s, tMax))
-    o << "\n  reference: " << h->index << " t " << h->t;
+  if (const ElementHit h = raycast(r, s, tMax); h.hit())
+    o << "\n  reference: " << h.index << " t " << h.t;
   else
     o << "\n  reference: miss";
   return o.str();

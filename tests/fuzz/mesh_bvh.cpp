@@ -14,7 +14,9 @@
 namespace simdphys {
 namespace {
 
-std::pair<std::uint32_t, std::uint32_t> key(const MeshHit& h) { return {h.id, fuzz::bitsOf(h.t)}; }
+std::pair<std::uint32_t, std::uint32_t> key(const ElementHit& h) {
+  return {h.index, fuzz::bitsOf(h.t)};
+}
 
 // The mesh's triangles and a list of ids, for a finding's message.
 std::string show(const Mesh& m, const std::vector<std::uint32_t>& ids) {
@@ -137,10 +139,10 @@ void query(const MeshBvh& bvh, fuzz::Input& in) {
       const RayStreamOptions options{Mode(in.byte() % 3), in.byte() % 2 ? 8u : 16u,
                                      std::uint32_t(in.count(5))};
       fuzz::sameOnEveryPath("MeshBvh::raycast(RayStream)", [&] {
-        std::vector<MeshHit> out(rays.size());
+        std::vector<ElementHit> out(rays.size());
         bvh.raycast(rays, out, options);
         std::vector<std::pair<std::uint32_t, std::uint32_t>> keys;
-        for (const MeshHit& h : out) keys.push_back(key(h));
+        for (const ElementHit& h : out) keys.push_back(key(h));
         fuzz::require(keys == single, "MeshBvh::raycast(RayStream): differs from single rays");
         return keys;
       });

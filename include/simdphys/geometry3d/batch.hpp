@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <limits>
-#include <optional>
 #include <vector>
 
 #include "simdphys/geometry3d/primitives.hpp"
@@ -30,19 +29,16 @@ std::size_t containing(const Vec3f& point, const BoxStream& boxes, std::vector<s
 // For every box, the point of it closest to `point` (the point itself when inside).
 void closestPoints(const Vec3f& point, const BoxStream& boxes, PointStream& out);
 
-// The first element a ray hits: the smallest t in [0, tMax] by raycast()'s rules (a ray that
-// starts inside a solid hits where it leaves), ties to the smaller index. Throws Error if the ray
-// is invalid (validate(Ray)) or tMax is negative or NaN (+inf is the default: no limit).
-struct StreamHit {
-  std::uint32_t index;
-  float t;
-};
-std::optional<StreamHit> raycast(const Ray& ray, const BoxStream& boxes,
-                                 float tMax = std::numeric_limits<float>::infinity());
-std::optional<StreamHit> raycast(const Ray& ray, const SphereStream& spheres,
-                                 float tMax = std::numeric_limits<float>::infinity());
+// The first element a ray hits (core.hpp's ElementHit: its index and t; a miss is index kNoHit):
+// the smallest t in [0, tMax] by raycast()'s rules (a ray that starts inside a solid hits where
+// it leaves), ties to the smaller index. Throws Error if the ray is invalid (validate(Ray)) or
+// tMax is negative or NaN (+inf is the default: no limit).
+ElementHit raycast(const Ray& ray, const BoxStream& boxes,
+                   float tMax = std::numeric_limits<float>::infinity());
+ElementHit raycast(const Ray& ray, const SphereStream& spheres,
+                   float tMax = std::numeric_limits<float>::infinity());
 // Watertight (Woop, Benthin and Wald 2013), two-sided.
-std::optional<StreamHit> raycast(const Ray& ray, const TriangleStream& triangles,
-                                 float tMax = std::numeric_limits<float>::infinity());
+ElementHit raycast(const Ray& ray, const TriangleStream& triangles,
+                   float tMax = std::numeric_limits<float>::infinity());
 
 }  // namespace simdphys

@@ -101,6 +101,9 @@ class Scene {
   void requireUpToDate(const char* where) const;
   // The index of model i's parent, or kNoModel.
   std::uint32_t parentIndex(std::uint32_t i) const;
+  // query()'s one body, for a sphere or a box (scene.cpp).
+  template <class Shape>
+  std::vector<std::uint32_t> select(const Shape& shape, SceneIndex via) const;
 
   // A handle's slot: the index of its model and the generation of the handle that names it.
   struct Slot {

@@ -22,7 +22,9 @@ Vec3<T> unitOr(const Vec3<T>& v, const Vec3<T>& fallback) {
 // tNear <= tFar whenever both are numbers. A direction component of +-0 with the origin exactly
 // on that slab's plane gives 0/0 = NaN: the comparisons below are false for NaN, so that plane
 // puts no bound on t and the closed slab contains the whole line (no NaN reaches the result).
-// Ties keep the lowest axis.
+// Ties keep the lowest axis. This is core/ray_slab-inl.hpp's clipSlab (its comparison form, as
+// batch3d.cpp's rayClosestBox runs it) written out, because the hit also needs the axis of the face
+// entered or left, for its normal, which the shared lane form does not track.
 template <class T>
 struct SlabHit {
   T t;
