@@ -70,7 +70,7 @@ void pairsBody(benchmark::State& state, std::size_t n, FindPairs findPairsNow) {
     benchmark::DoNotOptimize(pairs.data());
   }
   state.SetItemsProcessed(std::int64_t(state.iterations() * n));
-  state.counters["checksum_ok"] = scenes::pairChecksum(pairs, n) == ref.checksum ? 1 : 0;
+  state.counters["checksum_ok"] = workloads::pairChecksum(pairs, n) == ref.checksum ? 1 : 0;
   checkExact(state, pairs.size(), ref.pairs);
 }
 

@@ -6,27 +6,27 @@
 
 namespace simdphys::bench {
 
-const scenes::AabbWorkload& aabbWorkload(std::size_t n) {
-  static std::map<std::size_t, std::unique_ptr<scenes::AabbWorkload>> cache;
+const workloads::AabbWorkload& aabbWorkload(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<workloads::AabbWorkload>> cache;
   auto& w = cache[n];
-  if (!w) w = std::make_unique<scenes::AabbWorkload>(scenes::makeAabbWorkload(n));
+  if (!w) w = std::make_unique<workloads::AabbWorkload>(workloads::makeAabbWorkload(n));
   return *w;
 }
 
-const scenes::AabbReference& aabbReference(std::size_t n) {
-  for (const scenes::AabbReference& r : scenes::kAabbReference)
+const workloads::AabbReference& aabbReference(std::size_t n) {
+  for (const workloads::AabbReference& r : workloads::kAabbReference)
     if (r.boxes == n) return r;
   throw Error("no W1 reference figures for N = " + std::to_string(n));
 }
 
-const scenes::CullWorkload& cullWorkload() {
-  static const scenes::CullWorkload w = scenes::makeCullWorkload();
+const workloads::CullWorkload& cullWorkload() {
+  static const workloads::CullWorkload w = workloads::makeCullWorkload();
   return w;
 }
 
 const SphereStream& sphereField() {
   static const SphereStream s = [] {
-    scenes::Random rnd(7);
+    workloads::Random rnd(7);
     SphereStream out;
     for (int i = 0; i < 100'000; ++i) {
       Vec3f c(rnd.uniform(-100, 100), rnd.uniform(-100, 100), rnd.uniform(-100, 100));

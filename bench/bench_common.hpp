@@ -20,9 +20,9 @@
 
 namespace simdphys::bench {
 
-const scenes::AabbWorkload& aabbWorkload(std::size_t n);
-const scenes::AabbReference& aabbReference(std::size_t n);
-const scenes::CullWorkload& cullWorkload();
+const workloads::AabbWorkload& aabbWorkload(std::size_t n);
+const workloads::AabbReference& aabbReference(std::size_t n);
+const workloads::CullWorkload& cullWorkload();
 // 100,000 spheres from seed 7: centres uniform in the W1 cube [-100, 100]^3, radii in [0.1, 1.5].
 const SphereStream& sphereField();
 

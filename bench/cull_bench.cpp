@@ -49,7 +49,7 @@ void cullBody(benchmark::State& state, bool spheres, Cull cullNow) {
   state.SetBytesProcessed(std::int64_t(state.iterations() * n * (spheres ? 4 : 6) * 4));
   state.counters["error"] = double(disagreementWithDouble(visible, spheres));
   checkExact(state, visible.size(),
-             spheres ? scenes::kCullSpheresVisible : scenes::kCullBoxesVisible);
+             spheres ? workloads::kCullSpheresVisible : workloads::kCullBoxesVisible);
 }
 
 // The cull of `stream` from main memory: copies of it, at least kDramBytes in all, culled in turn,
@@ -60,7 +60,7 @@ void cullFromMemory(benchmark::State& state, const Stream& stream, bool spheres)
   const std::size_t bytes = stream.size() * (spheres ? 4 : 6) * sizeof(float);
   static const std::vector<Stream> copies(kDramBytes / bytes + 1, stream);
   std::size_t next = 0;
-  cullBody(state, spheres, [&](const scenes::CullWorkload& w, std::vector<std::uint32_t>& v) {
+  cullBody(state, spheres, [&](const workloads::CullWorkload& w, std::vector<std::uint32_t>& v) {
     cull(w.frustum, copies[next++ % copies.size()], v);
   });
   state.counters["copies"] = double(copies.size());
@@ -84,7 +84,7 @@ void registerCullBenchmarks() {
   });
   auto autovec = [](bool spheres) {
     return [spheres](benchmark::State& state) {
-      cullBody(state, spheres, [spheres](const scenes::CullWorkload& w, auto& v) {
+      cullBody(state, spheres, [spheres](const workloads::CullWorkload& w, auto& v) {
         v.resize(w.spheres.padded());
         v.resize(spheres ? simd::cullSpheresAutovec(planes(w.frustum), view(w.spheres), v.data())
                          : simd::cullBoundsAutovec(planes(w.frustum), view(w.boxes), v.data()));

@@ -19,10 +19,10 @@ constexpr std::size_t kSizes[] = {100, 300, 1'000, 3'000, 10'000, 30'000, 100'00
 constexpr std::size_t kMaxReferenceBrute = 30'000;
 constexpr std::size_t kKernelShapes = 100'000;
 
-const scenes::Shapes2dWorkload& shapes2dWorkload(std::size_t n) {
-  static std::map<std::size_t, std::unique_ptr<scenes::Shapes2dWorkload>> cache;
+const workloads::Shapes2dWorkload& shapes2dWorkload(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<workloads::Shapes2dWorkload>> cache;
   auto& w = cache[n];
-  if (!w) w = std::make_unique<scenes::Shapes2dWorkload>(scenes::makeShapes2dWorkload(n));
+  if (!w) w = std::make_unique<workloads::Shapes2dWorkload>(workloads::makeShapes2dWorkload(n));
   return *w;
 }
 
@@ -31,7 +31,7 @@ const scenes::Shapes2dWorkload& shapes2dWorkload(std::size_t n) {
 template <class Finder = PairFinder2d, class Find>
 void pairsBody(benchmark::State& state, std::size_t n, Find find) {
   const auto& w = shapes2dWorkload(n);
-  const auto& ref = scenes::shapes2dReference(n);
+  const auto& ref = workloads::shapes2dReference(n);
   Finder finder;
   std::vector<Pair> pairs;
   find(finder, w.bounds, pairs);  // warm-up: the scratch memory reaches its size
@@ -42,7 +42,7 @@ void pairsBody(benchmark::State& state, std::size_t n, Find find) {
   state.SetItemsProcessed(std::int64_t(state.iterations() * pairs.size()));
   state.counters["shapes_per_second"] =
       benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["colliding"] = double(scenes::collidingPairs(w, pairs));
+  state.counters["colliding"] = double(workloads::collidingPairs(w, pairs));
   state.counters["colliding_ok"] = state.counters["colliding"] == double(ref.collidingPairs);
   checkExact(state, pairs.size(), ref.boundPairs);
 }
@@ -90,9 +90,9 @@ void registerPairs(std::size_t n) {
     findPairs(w.bounds, candidates);
     std::uint64_t colliding = 0;
     for (auto _ : state)
-      benchmark::DoNotOptimize(colliding = scenes::collidingPairs(w, candidates));
+      benchmark::DoNotOptimize(colliding = workloads::collidingPairs(w, candidates));
     state.SetItemsProcessed(std::int64_t(state.iterations() * candidates.size()));
-    checkExact(state, colliding, scenes::shapes2dReference(n).collidingPairs);
+    checkExact(state, colliding, workloads::shapes2dReference(n).collidingPairs);
   });
 }
 

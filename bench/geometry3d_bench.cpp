@@ -17,7 +17,7 @@ constexpr std::size_t kRays = 256;
 // Rays from seed 3: origins uniform in the W1 cube, random unit directions.
 const std::vector<Ray>& rays() {
   static const std::vector<Ray> r = [] {
-    scenes::Random rnd(3);
+    workloads::Random rnd(3);
     std::vector<Ray> out;
     for (std::size_t i = 0; i < kRays; ++i) {
       Vec3f o(rnd.uniform(-100, 100), rnd.uniform(-100, 100), rnd.uniform(-100, 100));
@@ -113,14 +113,14 @@ void autovecBody(benchmark::State& state, const Stream& stream, Kernel kernel) {
 
 constexpr std::size_t kObbQueries = 16, kObbBoxes = 100'000;
 
-Mat3f randomRotation(scenes::Random& rnd) {
+Mat3f randomRotation(workloads::Random& rnd) {
   const Vec3f axis = rnd.unitDirection();
   return axisAngle(axis, rnd.uniform(0, 3.14159265f));
 }
 
 // Braces: list-initialisation evaluates the draws left to right (a constructor's arguments, in
 // parentheses, in an unspecified order), so the workload is the same with every compiler.
-Obb randomObb(scenes::Random& rnd, float spread, float minHalf, float maxHalf) {
+Obb randomObb(workloads::Random& rnd, float spread, float minHalf, float maxHalf) {
   const Vec3f c{rnd.uniform(-spread, spread), rnd.uniform(-spread, spread),
                 rnd.uniform(-spread, spread)};
   const Vec3f h{rnd.uniform(minHalf, maxHalf), rnd.uniform(minHalf, maxHalf),
@@ -140,7 +140,7 @@ struct ObbWorkload {
 
 const ObbWorkload& obbWorkload() {
   static const ObbWorkload w = [] {
-    scenes::Random rnd(9);
+    workloads::Random rnd(9);
     ObbWorkload out;
     for (std::size_t i = 0; i < kObbBoxes; ++i) out.boxes.push(randomObb(rnd, 10, 0.1f, 1.5f));
     for (std::size_t q = 0; q < kObbQueries; ++q) out.queries.push_back(randomObb(rnd, 5, 0.5f, 3));

@@ -25,7 +25,7 @@ struct Queries {
 };
 const Queries& queries() {
   static const Queries q = [] {
-    scenes::Random rnd(11);
+    workloads::Random rnd(11);
     Queries out;
     for (std::size_t i = 0; i < kQueries; ++i) {
       const Vec3f c(rnd.uniform(-100, 100), rnd.uniform(-100, 100), rnd.uniform(-100, 100));

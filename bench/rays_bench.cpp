@@ -16,8 +16,8 @@ struct RaysMethod {
 const RaysMethod kRaysMethods[] = {
     {"bvh", {RayStreamOptions::Mode::kSingle, 0, 0}, false},
     {"auto", {}, false},
-    {"packet16", {RayStreamOptions::Mode::kPackets, 16, scenes::kCameraWidth}, true},
-    {"packet8", {RayStreamOptions::Mode::kPackets, 8, scenes::kCameraWidth}, true},
+    {"packet16", {RayStreamOptions::Mode::kPackets, 16, workloads::kCameraWidth}, true},
+    {"packet8", {RayStreamOptions::Mode::kPackets, 8, workloads::kCameraWidth}, true},
 };
 
 void registerRays() {

@@ -18,8 +18,8 @@ namespace simdphys::bench {
 struct RaySet {
   const char* task;  // "rays/coherent", "rays/incoherent"
   RayStream rays;
-  scenes::RaysReference figures;
-  std::vector<scenes::ReferenceHit> reference;  // the double walk, per ray
+  workloads::RaysReference figures;
+  std::vector<workloads::ReferenceHit> reference;  // the double walk, per ray
 };
 
 struct RaysWorkload {
@@ -30,12 +30,13 @@ struct RaysWorkload {
 inline const RaysWorkload& raysWorkload() {
   static const std::unique_ptr<RaysWorkload> w = [] {
     auto p = std::make_unique<RaysWorkload>();
-    p->mesh = scenes::makeHeightfield();
-    p->coherent = {"rays/coherent", scenes::makeCoherentRays(), scenes::kCoherentReference, {}};
+    p->mesh = workloads::makeHeightfield();
+    p->coherent = {
+        "rays/coherent", workloads::makeCoherentRays(), workloads::kCoherentReference, {}};
     p->incoherent = {
-        "rays/incoherent", scenes::makeIncoherentRays(), scenes::kIncoherentReference, {}};
+        "rays/incoherent", workloads::makeIncoherentRays(), workloads::kIncoherentReference, {}};
     for (RaySet* s : {&p->coherent, &p->incoherent})
-      s->reference = scenes::referenceHits(p->mesh, scenes::kRaysGrid, s->rays);
+      s->reference = workloads::referenceHits(p->mesh, workloads::kRaysGrid, s->rays);
     return p;
   }();
   return *w;
@@ -48,14 +49,14 @@ inline const char* raysTask(RaysKind k) {
   return k == RaysKind::kCoherent ? "rays/coherent" : "rays/incoherent";
 }
 inline std::size_t raysCount(RaysKind k) {
-  return k == RaysKind::kCoherent ? std::size_t(scenes::kCameraWidth) * scenes::kCameraHeight
-                                  : scenes::kIncoherentRays;
+  return k == RaysKind::kCoherent ? std::size_t(workloads::kCameraWidth) * workloads::kCameraHeight
+                                  : workloads::kIncoherentRays;
 }
 inline const RaySet& raySet(RaysKind k) {
   return k == RaysKind::kCoherent ? raysWorkload().coherent : raysWorkload().incoherent;
 }
 inline constexpr std::size_t kRaysTriangles =
-    2 * std::size_t(scenes::kRaysGrid - 1) * (scenes::kRaysGrid - 1);
+    2 * std::size_t(workloads::kRaysGrid - 1) * (workloads::kRaysGrid - 1);
 
 inline const MeshBvh& raysMeshBvh() {
   static const MeshBvh bvh(raysWorkload().mesh);
@@ -72,12 +73,12 @@ inline void reportRays(benchmark::State& state, const RaySet& set, std::span<con
   state.SetItemsProcessed(std::int64_t(state.iterations() * set.rays.size()));
   state.counters["Mrays_per_s"] =
       benchmark::Counter(n * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
-  const scenes::RaysReference s = scenes::summarise(hits);
+  const workloads::RaysReference s = workloads::summarise(hits);
   state.counters["sum_t"] = s.sumT;
   state.counters["sum_t_rel_error"] = std::abs(s.sumT - set.figures.sumT) / set.figures.sumT;
   state.counters["sum_id"] = double(s.sumId);
   state.counters["sum_id_expected"] = double(set.figures.sumId);
-  const scenes::ReferenceComparison c = scenes::compareWithReference(hits, set.reference);
+  const workloads::ReferenceComparison c = workloads::compareWithReference(hits, set.reference);
   state.counters["differ"] = double(c.differ);
   state.counters["excused"] = double(c.excused);
   state.counters["max_rel_t"] = c.maxRelativeT;

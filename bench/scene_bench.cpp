@@ -35,7 +35,7 @@ void cullBody(benchmark::State& state, Cull cullNow) {
     benchmark::DoNotOptimize(visible.data());
   }
   state.SetItemsProcessed(std::int64_t(state.iterations() * w.boxes.size()));
-  checkExact(state, visible.size(), scenes::kCullBoxesVisible);
+  checkExact(state, visible.size(), workloads::kCullBoxesVisible);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ struct BoxSet {
 
 inline BoxStream randomBoxes(std::uint64_t seed, std::size_t n, float spread, float minHalf,
                              float maxHalf, Vec3f offset = Vec3f::Zero()) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   BoxStream boxes;
   for (std::size_t i = 0; i < n; ++i) {
     Vec3f c(r.uniform(-spread, spread), r.uniform(-spread, spread), r.uniform(-spread, spread));
@@ -42,7 +42,7 @@ inline std::vector<BoxSet> hardBoxSets() {
   sets.push_back({"touching_lattice", std::move(lattice)});
   // Points (zero-size boxes), some coincident, some on other boxes' faces.
   BoxStream points;
-  scenes::Random r(11);
+  workloads::Random r(11);
   for (int i = 0; i < 600; ++i) {
     Vec3f p(float(int(r.uniform(0, 6))), float(int(r.uniform(0, 6))), float(int(r.uniform(0, 6))));
     points.push({p, p});

@@ -121,12 +121,12 @@ TEST_P(Pairs, PlainLoopBaselineEqualsBruteForce) {
 
 // W1 at N = 100,000: the exact reference figures of the workload specification.
 TEST_P(Pairs, W1ReferenceFigures) {
-  const scenes::AabbReference& ref = scenes::kAabbReference[0];
-  scenes::AabbWorkload w = scenes::makeAabbWorkload(ref.boxes);
+  const workloads::AabbReference& ref = workloads::kAabbReference[0];
+  workloads::AabbWorkload w = workloads::makeAabbWorkload(ref.boxes);
   std::vector<Pair> pairs;
   findPairs(w.boxes, pairs);
   EXPECT_EQ(pairs.size(), ref.pairs);
-  EXPECT_EQ(scenes::pairChecksum(pairs, ref.boxes), ref.checksum);
+  EXPECT_EQ(workloads::pairChecksum(pairs, ref.boxes), ref.checksum);
   EXPECT_EQ(Bvh(w.boxes).countOverlaps(w.queries), ref.queryOverlaps);
 }
 

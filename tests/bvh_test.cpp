@@ -72,7 +72,7 @@ TEST_P(BvhQuery, RandomBoxesEqualBruteForce) {
   BoxStream boxes = test::randomBoxes(21, 3000, 50, 0.1f, 3);
   Bvh tree(boxes);
   checkStructure(tree, boxes);
-  scenes::Random r(22);
+  workloads::Random r(22);
   std::vector<Aabb> queries;
   std::uint64_t expected = 0;
   for (int q = 0; q < 200; ++q) {
@@ -137,7 +137,7 @@ TEST_P(BvhQuery, RefitAnswersLikeARebuild) {
   BoxStream boxes = test::randomBoxes(23, 2000, 40, 0.2f, 2);
   Bvh tree(boxes);
   // Move every box; the refitted tree must answer exactly as a new one (and as brute force).
-  scenes::Random r(24);
+  workloads::Random r(24);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     Vec3f move(r.uniform(-5, 5), r.uniform(-5, 5), r.uniform(-5, 5));
     boxes.set(i, {boxes[i].min + move, boxes[i].max + move});

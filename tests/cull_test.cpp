@@ -59,14 +59,14 @@ SIMDPHYS_ON_EVERY_PATH(Cull);
 // same indices as the scalar reference, on every path. The workload and the reference depend on
 // no path: made once, every path run in this process.
 TEST(CullW6, ReferenceFiguresOnEveryPath) {
-  const scenes::CullWorkload w = scenes::makeCullWorkload();
+  const workloads::CullWorkload w = workloads::makeCullWorkload();
   const std::vector<std::uint32_t> spheres = referenceCull(w.frustum, w.spheres),
                                    boxes = referenceCull(w.frustum, w.boxes);
   test::forEveryPath([&] {
     std::vector<std::uint32_t> visible;
-    EXPECT_EQ(cull(w.frustum, w.spheres, visible), scenes::kCullSpheresVisible);
+    EXPECT_EQ(cull(w.frustum, w.spheres, visible), workloads::kCullSpheresVisible);
     EXPECT_EQ(visible, spheres);
-    EXPECT_EQ(cull(w.frustum, w.boxes, visible), scenes::kCullBoxesVisible);
+    EXPECT_EQ(cull(w.frustum, w.boxes, visible), workloads::kCullBoxesVisible);
     EXPECT_EQ(visible, boxes);
   });
 }
@@ -104,7 +104,7 @@ TEST_P(Cull, EdgeOnFrustumAndPaddingLanes) {
   Mat4d view = lookAt(Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 1, 0));
   Mat4d proj = perspective(std::numbers::pi / 2, 1.0, 0.5, 100.0);
   Frustum f = Frustumd::fromMatrix(proj * view).cast<float>();
-  scenes::Random rnd(61);
+  workloads::Random rnd(61);
   SphereStream s;
   BoundsStream b;
   for (int i = 0; i < 37; ++i) {  // 37: the last vector is mostly padding on every width

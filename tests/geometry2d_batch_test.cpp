@@ -52,7 +52,7 @@ Ids each(const Stream& s, Test test) {
 }
 
 CircleStream randomCircles(std::uint64_t seed, std::size_t n, float spread, Vec2f offset = {0, 0}) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   CircleStream s;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2f c(r.uniform(-spread, spread), r.uniform(-spread, spread));
@@ -63,7 +63,7 @@ CircleStream randomCircles(std::uint64_t seed, std::size_t n, float spread, Vec2
 }
 
 RectStream randomRects(std::uint64_t seed, std::size_t n, float spread, Vec2f offset = {0, 0}) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   RectStream s;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2f c(r.uniform(-spread, spread), r.uniform(-spread, spread));
@@ -79,7 +79,7 @@ RectStream randomRects(std::uint64_t seed, std::size_t n, float spread, Vec2f of
 // rectangles' edges (multiples of pi/4), where the separation test meets its ties.
 OrientedRectStream randomOrientedRects(std::uint64_t seed, std::size_t n, float spread,
                                        Vec2f offset = {0, 0}) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   OrientedRectStream s;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2f c(r.uniform(-spread, spread), r.uniform(-spread, spread));
@@ -126,7 +126,7 @@ TEST_P(Batch2d, RandomQueriesEqualTheScalarTests) {
   const CircleStream circles = randomCircles(51, 1001, 30);
   const RectStream rects = randomRects(52, 1003, 30);
   const OrientedRectStream orects = randomOrientedRects(53, 1005, 30);
-  scenes::Random r(54);
+  workloads::Random r(54);
   for (int q = 0; q < 300; ++q) {
     const Vec2f c(r.uniform(-35, 35), r.uniform(-35, 35));
     expectSameAsScalar(Circle{c, r.uniform(0, 6)}, circles);
@@ -145,7 +145,7 @@ TEST_P(Batch2d, RandomQueriesEqualTheScalarTests) {
 // Shapes placed to touch in exact arithmetic, so rounding and the tolerance decide: the cases
 // where a kernel that computed anything differently from the scalar function would disagree.
 TEST_P(Batch2d, NearlyTouchingShapesEqualTheScalarTests) {
-  scenes::Random r(55);
+  workloads::Random r(55);
   for (float scale : {1.0f, 1e5f}) {  // at 1e5 an ulp of a coordinate is 0.0078
     const Vec2f at(scale, -scale);
     CircleStream circles;
@@ -280,7 +280,7 @@ TEST_P(Batch2d, PlainLoopBaselinesAgree) {
   const CircleStream circles = randomCircles(58, 500, 20);
   const RectStream rects = randomRects(59, 500, 20);
   const OrientedRectStream orects = randomOrientedRects(60, 500, 20);
-  scenes::Random r(61);
+  workloads::Random r(61);
   Ids simdIds, loopIds;
   auto both = [&](auto kernel, auto plain, const auto& query, const auto& stream) {
     simdIds.resize(stream.padded()), loopIds.resize(stream.padded());
@@ -399,7 +399,7 @@ std::vector<RectSet> rectSets() {
   sets.push_back({"touching_lattice", std::move(lattice)});
   // Points, many coincident, some on other rectangles' edges.
   RectStream points;
-  scenes::Random r(72);
+  workloads::Random r(72);
   for (int i = 0; i < 800; ++i) {
     const Vec2f p(float(int(r.uniform(0, 8))), float(int(r.uniform(0, 8))));
     points.push({p, p});
@@ -419,7 +419,7 @@ std::vector<RectSet> rectSets() {
   sets.push_back({"flat", std::move(flat)});
   // Many bands: a tall thin world, rectangles spanning from one band to several.
   RectStream tall;
-  scenes::Random t(74);
+  workloads::Random t(74);
   for (int i = 0; i < 3000; ++i) {
     const Vec2f c(t.uniform(-3, 3), t.uniform(-3000, 3000));
     tall.push(Rect::fromCenter(c, Vec2f(t.uniform(0, 1), i % 50 == 0 ? 200.0f : t.uniform(0, 2))));
@@ -456,7 +456,7 @@ TEST_P(Broadphase2d, EveryMethodEqualsBruteForce) {
 TEST_P(Broadphase2d, ManyBandsOfManyPairsComeOutSorted) {
   static const RectStream rects = [] {
     RectStream s;
-    scenes::Random r(75);
+    workloads::Random r(75);
     for (int i = 0; i < 8000; ++i)
       s.push(Rect::fromCenter(Vec2f(r.uniform(-1, 1), r.uniform(-2000, 2000)),
                               Vec2f(r.uniform(0, 1), r.uniform(0, 4))));
@@ -489,13 +489,13 @@ TEST_P(Broadphase2d, PlainLoopBaselinesEqualBruteForce) {
 // The standard 2D workload (W7): the reference figures of docs/workloads.md, at a size the test
 // can brute-force.
 TEST_P(Broadphase2d, WorkloadReferenceFigures) {
-  const scenes::Shapes2dWorkload w = scenes::makeShapes2dWorkload(3000);
+  const workloads::Shapes2dWorkload w = workloads::makeShapes2dWorkload(3000);
   std::vector<Pair> pairs;
   findPairs(w.bounds, pairs);
   EXPECT_EQ(pairs, bruteForcePairs(w.bounds));
-  const scenes::Shapes2dReference& ref = scenes::shapes2dReference(3000);
+  const workloads::Shapes2dReference& ref = workloads::shapes2dReference(3000);
   EXPECT_EQ(pairs.size(), ref.boundPairs);
-  EXPECT_EQ(scenes::collidingPairs(w, pairs), ref.collidingPairs);
+  EXPECT_EQ(workloads::collidingPairs(w, pairs), ref.collidingPairs);
 }
 
 }  // namespace

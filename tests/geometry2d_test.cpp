@@ -1143,18 +1143,18 @@ Verdict sampled(const Shape& a, const Shape& b, double margin) {
 // Random shapes from float draws: centers in [-3, 3]^2, sizes in [0.05, 2], any rotation. The
 // draws are floats, so the same shapes are tested in float and in double.
 template <class T>
-CircleT<T> randomCircle(scenes::Random& r) {
+CircleT<T> randomCircle(workloads::Random& r) {
   const float x = r.uniform(-3, 3), y = r.uniform(-3, 3);
   return {Vec2<T>(x, y), T(r.uniform(0.05f, 2))};
 }
 template <class T>
-RectT<T> randomRect(scenes::Random& r) {
+RectT<T> randomRect(workloads::Random& r) {
   const float x = r.uniform(-3, 3), y = r.uniform(-3, 3);
   const float hx = r.uniform(0.05f, 2), hy = r.uniform(0.05f, 2);
   return {Vec2<T>(x - hx, y - hy), Vec2<T>(x + hx, y + hy)};
 }
 template <class T>
-OrientedRectT<T> randomOriented(scenes::Random& r) {
+OrientedRectT<T> randomOriented(workloads::Random& r) {
   const float x = r.uniform(-3, 3), y = r.uniform(-3, 3);
   const float hx = r.uniform(0.05f, 2), hy = r.uniform(0.05f, 2);
   return {Vec2<T>(x, y), Vec2<T>(hx, hy), T(r.uniform(-3.2f, 3.2f))};
@@ -1171,7 +1171,7 @@ constexpr double kMargin = 1e-4;
 // the flipped manifold bit for bit.
 template <class T, class GenA, class GenB>
 void checkPairs(GenA genA, GenB genB, std::uint64_t seed, const char* what) {
-  scenes::Random rng(seed);
+  workloads::Random rng(seed);
   constexpr int kCases = 1000;
   int overlaps = 0, aparts = 0, unsure = 0;
   for (int k = 0; k < kCases; ++k) {
@@ -1222,9 +1222,9 @@ void checkPairs(GenA genA, GenB genB, std::uint64_t seed, const char* what) {
 
 TYPED_TEST(Oracle2d, CollisionsMatchBruteForceAndManifoldsSeparate) {
   using T = TypeParam;
-  const auto c = [](scenes::Random& r) { return randomCircle<T>(r); };
-  const auto a = [](scenes::Random& r) { return randomRect<T>(r); };
-  const auto o = [](scenes::Random& r) { return randomOriented<T>(r); };
+  const auto c = [](workloads::Random& r) { return randomCircle<T>(r); };
+  const auto a = [](workloads::Random& r) { return randomRect<T>(r); };
+  const auto o = [](workloads::Random& r) { return randomOriented<T>(r); };
   checkPairs<T>(c, c, 101, "circle-circle");
   checkPairs<T>(c, a, 102, "circle-rect");
   checkPairs<T>(c, o, 103, "circle-oriented");
@@ -1236,7 +1236,7 @@ TYPED_TEST(Oracle2d, CollisionsMatchBruteForceAndManifoldsSeparate) {
 // Point tests against the oracle's sdf and clamped closest points, on random points in [-6, 6]^2.
 template <class T, class Gen>
 void checkPoints(Gen gen, std::uint64_t seed, const char* what) {
-  scenes::Random rng(seed);
+  workloads::Random rng(seed);
   for (int k = 0; k < 2000; ++k) {
     const auto s = gen(rng);
     const Vec2<T> p(rng.uniform(-6, 6), rng.uniform(-6, 6));
@@ -1256,16 +1256,16 @@ void checkPoints(Gen gen, std::uint64_t seed, const char* what) {
 
 TYPED_TEST(Oracle2d, PointTestsMatchDouble) {
   using T = TypeParam;
-  checkPoints<T>([](scenes::Random& r) { return randomCircle<T>(r); }, 201, "circle");
-  checkPoints<T>([](scenes::Random& r) { return randomRect<T>(r); }, 202, "rect");
-  checkPoints<T>([](scenes::Random& r) { return randomOriented<T>(r); }, 203, "oriented");
+  checkPoints<T>([](workloads::Random& r) { return randomCircle<T>(r); }, 201, "circle");
+  checkPoints<T>([](workloads::Random& r) { return randomRect<T>(r); }, 202, "rect");
+  checkPoints<T>([](workloads::Random& r) { return randomOriented<T>(r); }, 203, "oriented");
 }
 
 // Segments against dense sampling along them (spacing = length / 1023, the same argument as for
 // the boundaries: a segment that meets the shape has a sample within half a spacing of it).
 template <class T, class Gen>
 void checkSegments(Gen gen, std::uint64_t seed, const char* what) {
-  scenes::Random rng(seed);
+  workloads::Random rng(seed);
   int unsure = 0, hits = 0, misses = 0;
   constexpr int kCases = 1500, kSamples = 1024;
   for (int k = 0; k < kCases; ++k) {
@@ -1297,9 +1297,9 @@ void checkSegments(Gen gen, std::uint64_t seed, const char* what) {
 
 TYPED_TEST(Oracle2d, SegmentTestsMatchSampling) {
   using T = TypeParam;
-  checkSegments<T>([](scenes::Random& r) { return randomCircle<T>(r); }, 301, "circle");
-  checkSegments<T>([](scenes::Random& r) { return randomRect<T>(r); }, 302, "rect");
-  checkSegments<T>([](scenes::Random& r) { return randomOriented<T>(r); }, 303, "oriented");
+  checkSegments<T>([](workloads::Random& r) { return randomCircle<T>(r); }, 301, "circle");
+  checkSegments<T>([](workloads::Random& r) { return randomRect<T>(r); }, 302, "rect");
+  checkSegments<T>([](workloads::Random& r) { return randomOriented<T>(r); }, 303, "oriented");
 }
 
 // Raycasts against sampling along the ray (spacing 0.005, from t = 0 until the ray is past the
@@ -1309,7 +1309,7 @@ TYPED_TEST(Oracle2d, SegmentTestsMatchSampling) {
 // lines and some directions are axis-aligned.
 template <class T, class Gen>
 void checkRays(Gen gen, std::uint64_t seed, const char* what) {
-  scenes::Random rng(seed);
+  workloads::Random rng(seed);
   int unsure = 0, hits = 0, misses = 0, insides = 0;
   constexpr int kCases = 1500;
   constexpr double kStep = 0.005, kFar = 40;
@@ -1379,9 +1379,9 @@ void checkRays(Gen gen, std::uint64_t seed, const char* what) {
 
 TYPED_TEST(Oracle2d, RaycastsMatchSampling) {
   using T = TypeParam;
-  checkRays<T>([](scenes::Random& r) { return randomCircle<T>(r); }, 401, "circle");
-  checkRays<T>([](scenes::Random& r) { return randomRect<T>(r); }, 402, "rect");
-  checkRays<T>([](scenes::Random& r) { return randomOriented<T>(r); }, 403, "oriented");
+  checkRays<T>([](workloads::Random& r) { return randomCircle<T>(r); }, 401, "circle");
+  checkRays<T>([](workloads::Random& r) { return randomRect<T>(r); }, 402, "rect");
+  checkRays<T>([](workloads::Random& r) { return randomOriented<T>(r); }, 403, "oriented");
 }
 
 // Welzl against brute force: the smallest of the diameter circles of all pairs and the
@@ -1389,7 +1389,7 @@ TYPED_TEST(Oracle2d, RaycastsMatchSampling) {
 // half of them snapped to a 0.5 grid (duplicates, collinear triples, cocircular points).
 TYPED_TEST(Oracle2d, ContainingCircleIsMinimal) {
   using T = TypeParam;
-  scenes::Random rng(501);
+  workloads::Random rng(501);
   for (int k = 0; k < 400; ++k) {
     const int n = 1 + int(rng.next() % 12);
     std::vector<Vec2<T>> points;
@@ -1433,7 +1433,7 @@ TYPED_TEST(Oracle2d, ContainingCircleIsMinimal) {
 
 TYPED_TEST(Oracle2d, ContainingRectIsTheMinMax) {
   using T = TypeParam;
-  scenes::Random rng(502);
+  workloads::Random rng(502);
   for (int k = 0; k < 100; ++k) {
     std::vector<Vec2<T>> points;
     const int n = 1 + int(rng.next() % 20);

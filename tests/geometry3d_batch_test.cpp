@@ -19,7 +19,7 @@ namespace {
 using test::OnEveryPath;
 
 SphereStream randomSpheres(std::uint64_t seed, std::size_t n, float spread) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   SphereStream s;
   for (std::size_t i = 0; i < n; ++i) {
     Vec3f c(r.uniform(-spread, spread), r.uniform(-spread, spread), r.uniform(-spread, spread));
@@ -58,7 +58,7 @@ SIMDPHYS_ON_EVERY_PATH(Batch3d);
 TEST_P(Batch3d, SphereQueriesEqualTheScalarTests) {
   const SphereStream spheres = randomSpheres(41, 1001, 30);  // 1001: a partial last vector
   const BoxStream boxes = test::randomBoxes(42, 1003, 30, 0.1f, 3);
-  scenes::Random r(43);
+  workloads::Random r(43);
   std::vector<std::uint32_t> got;
   for (int q = 0; q < 200; ++q) {
     const Sphere s{{r.uniform(-35, 35), r.uniform(-35, 35), r.uniform(-35, 35)}, r.uniform(0, 6)};
@@ -106,7 +106,7 @@ TEST_P(Batch3d, ClosestPointsEqualTheScalarFunction) {
 TEST_P(Batch3d, RaycastsEqualTheScalarRaycast) {
   const SphereStream spheres = randomSpheres(45, 517, 40);
   const BoxStream boxes = test::randomBoxes(46, 519, 40, 0.1f, 3);
-  scenes::Random r(47);
+  workloads::Random r(47);
   for (int q = 0; q < 300; ++q) {
     const Ray ray{{r.uniform(-50, 50), r.uniform(-50, 50), r.uniform(-50, 50)}, r.unitDirection()};
     const float tMax = q % 3 == 0 ? r.uniform(0, 60) : std::numeric_limits<float>::infinity();
@@ -171,7 +171,7 @@ TriangleStream heightfield(int g) {
 
 TEST_P(Batch3d, TriangleRaycastsEqualTheScalarRaycast) {
   const TriangleStream mesh = heightfield(9);  // 128 triangles
-  scenes::Random r(49);
+  workloads::Random r(49);
   int hits = 0;
   for (int q = 0; q < 400; ++q) {
     const Ray ray{{r.uniform(-12, 12), r.uniform(2, 6), r.uniform(-12, 12)}, r.unitDirection()};
@@ -193,7 +193,7 @@ TEST_P(Batch3d, TriangleRaycastsEqualTheScalarRaycast) {
 
 // ---- one OBB against many ----------------------------------------------------------------------
 
-Mat3f randomRotation(scenes::Random& r) {
+Mat3f randomRotation(workloads::Random& r) {
   return axisAngle(r.unitDirection(), r.uniform(0, 3.14159f));
 }
 
@@ -201,7 +201,7 @@ Mat3f randomRotation(scenes::Random& r) {
 // 2 * spread about `at`.
 ObbStream randomObbs(std::uint64_t seed, std::size_t n, const Vec3f& at, float spread,
                      float minHalf, float maxHalf) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   ObbStream s;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3f c = at + Vec3f(r.uniform(-spread, spread), r.uniform(-spread, spread),
@@ -239,7 +239,7 @@ SIMDPHYS_ON_EVERY_PATH(ObbBatch);
 // the pairs intersect, many only just (deciding on edge axes). 1001 boxes: a partial last vector.
 TEST_P(ObbBatch, RandomBoxesEqualTheScalarTest) {
   const ObbStream boxes = randomObbs(51, 1001, Vec3f::Zero(), 6, 0.05f, 2);
-  scenes::Random r(52);
+  workloads::Random r(52);
   std::size_t hits = 0;
   for (int q = 0; q < 60; ++q) {
     const Obb box{{r.uniform(-3, 3), r.uniform(-3, 3), r.uniform(-3, 3)},
@@ -257,7 +257,7 @@ TEST_P(ObbBatch, RandomBoxesEqualTheScalarTest) {
 // decided by rounding. The batch must round the same way. A few boxes are also moved by 1e5,
 // where the offsets are a few ulp of the coordinates.
 TEST_P(ObbBatch, BoxesAtTheToleranceEqualTheScalarTest) {
-  scenes::Random r(53);
+  workloads::Random r(53);
   for (const Vec3f& base : {Vec3f(0, 0, 0), Vec3f(1e5f, -1e5f, 1e5f)}) {
     const float size = base.isZero() ? 1.0f : 1e-2f;
     const Obb box{base, Vec3f(0.7f, 1.0f, 0.3f) * size, randomRotation(r)};
@@ -355,7 +355,7 @@ TEST_P(ObbBatch, LargeCoordinatesSmallBoxes) {
   std::vector<std::uint32_t> want;
   for (std::uint32_t i = 0; i < 12; i += 2) want.push_back(i);
   EXPECT_EQ(expectScalarAnswer(cube(base, s / 2), streamOf(boxes)), want);
-  scenes::Random r(54);
+  workloads::Random r(54);
   const ObbStream turned = randomObbs(55, 300, base, 0.02f, 0.001f, 0.01f);
   for (int q = 0; q < 20; ++q)
     expectScalarAnswer({base, Vec3f::Constant(r.uniform(0.001f, 0.01f)), randomRotation(r)},
@@ -415,7 +415,7 @@ TEST(ObbBatchErrors, BadBoxesAreRejectedWithWhereAndWhat) {
 // of the two orders would round differently if it were not symmetric. In float and double.
 template <class T>
 void expectSymmetric(std::uint64_t seed) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   int boundaries = 0;
   for (int n = 0; n < 2000; ++n) {
     const auto obb = [&] {

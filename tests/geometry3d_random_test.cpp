@@ -13,9 +13,9 @@ using namespace test;
 // Random inputs and oracles
 // =============================================================================================
 
-// Draws from scenes::Random (fixed seeds), in float; the same draws feed both scalar types.
+// Draws from workloads::Random (fixed seeds), in float; the same draws feed both scalar types.
 struct Draw {
-  scenes::Random r;
+  workloads::Random r;
   explicit Draw(std::uint64_t seed) : r(seed) {}
   double uniform(double a, double b) { return r.uniform(float(a), float(b)); }
   template <class T>

@@ -337,7 +337,7 @@ TYPED_TEST(TriangleRaycast, BarycentricAndPrecomputedRay) {
   EXPECT_NEAR(h->w, 0.25, kHandTol<T>);
   // The overload taking the precomputed ray gives the same record, bit for bit, as the plain one,
   // on random rays and triangles.
-  scenes::Random rng(31);
+  workloads::Random rng(31);
   for (int i = 0; i < 500; ++i) {
     TriangleT<T> t;
     for (Vec3<T>* v : {&t.a, &t.b, &t.c})
@@ -577,7 +577,7 @@ int hitCount(const Grid<T>& g, const RayT<T>& r, Hit&& hit) {
 //   surface can be tangent to it along a silhouette edge, where the two triangles face the ray
 //   from opposite sides and rounding may legitimately put the ray just outside both.)
 template <class T>
-Vec3<T> steepDirection(scenes::Random& rng) {
+Vec3<T> steepDirection(workloads::Random& rng) {
   const double y = rng.uniform(0, 1) < 0.5f ? -1 : 1;
   return Vec3d(0.3 * rng.uniform(-1, 1), y, 0.3 * rng.uniform(-1, 1)).normalized().cast<T>();
 }
@@ -612,7 +612,7 @@ std::vector<RayT<T>> edgeAndVertexRays(const Grid<T>& g) {
         rays.push_back({Vec3<T>(T(10), y, r0.z()), v3<T>(-1, 0, 0)});
       }
     }
-  scenes::Random rng(2);
+  workloads::Random rng(2);
   for (int j = 1; j + 1 < G; ++j)
     for (int i = 1; i + 1 < G; ++i) {
       const Vec3<T>& p = g.v(i, j);
@@ -793,7 +793,7 @@ TYPED_TEST(HardCase, EdgeFunctionFallbackDecidesTheSign) {
 // double for float input, so the same bound holds. Only rays aimed at the central half of each
 // shape are compared, where t is not sensitive to the direction (grazing hits are).
 TEST(HardCaseFloat, LargeCoordinatesSmallShapes) {
-  scenes::Random rng(5);
+  workloads::Random rng(5);
   const Vec3d base(1e5, -1e5, 1e5);
   std::map<std::string, int> compared;
   for (int i = 0; i < 400; ++i) {
@@ -859,7 +859,7 @@ TEST(HardCaseFloat, LargeCoordinatesSmallShapes) {
 // bound 32 eps_f D ~ 4e-6 is larger than the shape (an ulp of 1 is 1.2e-7, a float ray cannot do
 // better), but every ray aimed at the central half still hits, in float as in double.
 TEST(HardCaseFloat, TinyShapes) {
-  scenes::Random rng(7);
+  workloads::Random rng(7);
   int compared = 0;
   for (double scale : {1e-6, 1.0}) {
     for (int i = 0; i < 300; ++i) {
@@ -1011,7 +1011,7 @@ TEST(BookErrors, PlaneThenBarycentricTriangleTestLeaks) {
 // terms are ~1e4, their rounding errors ~1e-3, far more than r^2 = 1e-6, so aimed rays are
 // reported as misses at random. simdphys uses the perpendicular vector instead.
 TEST(BookErrors, SmallFarSphereKeepsItsPrecision) {
-  scenes::Random rng(11);
+  workloads::Random rng(11);
   int bookMisses = 0, ours = 0;
   const int n = 200;
   for (int i = 0; i < n; ++i) {
@@ -1031,7 +1031,7 @@ TEST(BookErrors, SmallFarSphereKeepsItsPrecision) {
 // ---- properties on random inputs ----------------------------------------------------------------
 
 template <class T>
-Vec3<T> randomIn(scenes::Random& r, float lo, float hi) {
+Vec3<T> randomIn(workloads::Random& r, float lo, float hi) {
   return v3<T>(r.uniform(lo, hi), r.uniform(lo, hi), r.uniform(lo, hi));
 }
 
@@ -1039,7 +1039,7 @@ Vec3<T> randomIn(scenes::Random& r, float lo, float hi) {
 // (so that hits, misses and grazes all occur), sometimes in a random direction, sometimes from
 // inside.
 template <class T>
-RayT<T> randomRay(scenes::Random& r, const Vec3<T>& centre, float size) {
+RayT<T> randomRay(workloads::Random& r, const Vec3<T>& centre, float size) {
   const float kind = r.uniform(0, 1);
   Vec3<T> origin = kind < 0.15f ? Vec3<T>(centre + randomIn<T>(r, -0.5f * size, 0.5f * size))
                                 : Vec3<T>(centre + randomIn<T>(r, -20, 20));
@@ -1051,7 +1051,7 @@ RayT<T> randomRay(scenes::Random& r, const Vec3<T>& centre, float size) {
 }
 
 template <class T>
-Mat3<T> randomRotation(scenes::Random& r) {
+Mat3<T> randomRotation(workloads::Random& r) {
   // The float direction is unit to float precision only: normalised again in double.
   return Eigen::AngleAxisd(r.uniform(0, 6.2831853f), r.unitDirection().cast<double>().normalized())
       .toRotationMatrix()
@@ -1117,7 +1117,7 @@ void checkSolid(const Shape& shape, const RayT<T>& r, const Vec3d& centre, doubl
 
 TYPED_TEST(Property, Sphere) {
   using T = TypeParam;
-  scenes::Random rng(101);
+  workloads::Random rng(101);
   Counts counts;
   for (int i = 0; i < 3000; ++i) {
     const SphereT<T> s{randomIn<T>(rng, -10, 10), T(rng.uniform(0.5f, 5))};
@@ -1139,7 +1139,7 @@ TYPED_TEST(Property, Sphere) {
 
 TYPED_TEST(Property, Aabb) {
   using T = TypeParam;
-  scenes::Random rng(102);
+  workloads::Random rng(102);
   Counts counts;
   for (int i = 0; i < 3000; ++i) {
     const Vec3<T> c = randomIn<T>(rng, -10, 10), half = randomIn<T>(rng, 0.5f, 5);
@@ -1162,7 +1162,7 @@ TYPED_TEST(Property, Aabb) {
 
 TYPED_TEST(Property, Obb) {
   using T = TypeParam;
-  scenes::Random rng(103);
+  workloads::Random rng(103);
   Counts counts;
   for (int i = 0; i < 3000; ++i) {
     const ObbT<T> b{randomIn<T>(rng, -10, 10), randomIn<T>(rng, 0.5f, 5), randomRotation<T>(rng)};
@@ -1191,7 +1191,7 @@ TYPED_TEST(Property, Obb) {
 // the ray exactly.
 TYPED_TEST(Property, Plane) {
   using T = TypeParam;
-  scenes::Random rng(104);
+  workloads::Random rng(104);
   Counts counts;
   for (int i = 0; i < 3000; ++i) {
     const Vec3<T> n = rng.unitDirection().template cast<T>();
@@ -1227,7 +1227,7 @@ TYPED_TEST(Property, Plane) {
 // tRef >= 0 and all coordinates are positive; t within tol / |cos|; the normal +-n facing the ray.
 TYPED_TEST(Property, Triangle) {
   using T = TypeParam;
-  scenes::Random rng(105);
+  workloads::Random rng(105);
   Counts counts;
   const double margin = std::is_same_v<T, float> ? 1e-4 : 1e-10;
   for (int i = 0; i < 4000; ++i) {
@@ -1276,7 +1276,7 @@ TYPED_TEST(Property, Triangle) {
 // all, linecast has nothing and linetest is true only if the start is in the solid (clear cases
 // of the oracle, beyond tol from the surface). Points: linetest is the containment test.
 template <class T, class Shape>
-void checkSegments(const Shape& shape, scenes::Random& rng, const Vec3d& centre, float size,
+void checkSegments(const Shape& shape, workloads::Random& rng, const Vec3d& centre, float size,
                    int& agreed) {
   constexpr bool solid = !std::is_same_v<Shape, PlaneT<T>> && !std::is_same_v<Shape, TriangleT<T>>;
   const Vec3<T> start = Vec3<T>(centre.cast<T>()) + randomIn<T>(rng, -3 * size, 3 * size);
@@ -1321,7 +1321,7 @@ void checkSegments(const Shape& shape, scenes::Random& rng, const Vec3d& centre,
 
 TYPED_TEST(Property, LinetestAgreesWithRaycast) {
   using T = TypeParam;
-  scenes::Random rng(106);
+  workloads::Random rng(106);
   int agreed = 0;
   const int n = 2000;
   for (int i = 0; i < n; ++i) {

@@ -88,7 +88,7 @@ Segmentd seen(const SegmentT<U>& t) {
 // ---- random shapes (double, float-representable where that matters) -------------------------
 
 struct Rng {
-  scenes::Random r;
+  workloads::Random r;
   explicit Rng(std::uint64_t seed) : r(seed) {}
   double u(double a, double b) { return r.uniform(float(a), float(b)); }
   Vec3d dir() { return r.unitDirection().cast<double>(); }

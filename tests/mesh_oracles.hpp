@@ -51,7 +51,7 @@ std::vector<std::uint32_t> bruteOverlapping(const Mesh& m, const Shape& shape) {
 // A soup of n random triangles of edge up to `size` in [-spread, spread]^3 (none degenerate: the
 // draw is repeated until the double normal is non-zero).
 inline Mesh randomSoup(std::uint64_t seed, std::size_t n, float spread, float size) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   Mesh m;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3f c(r.uniform(-spread, spread), r.uniform(-spread, spread),
@@ -71,7 +71,7 @@ inline Mesh randomSoup(std::uint64_t seed, std::size_t n, float spread, float si
 // Rays from random origins in [-reach, reach]^3: random directions, and one in eight along an
 // axis (zero direction components: the slab test's NaN case when the origin is on a face).
 inline std::vector<Ray> randomRays(std::uint64_t seed, std::size_t n, float reach) {
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   std::vector<Ray> rays;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3f o(r.uniform(-reach, reach), r.uniform(-reach, reach), r.uniform(-reach, reach));

@@ -76,9 +76,9 @@ std::size_t checkModes(const Mesh& mesh, const std::vector<Ray>& rays,
 // W2's camera over a G = 33 heightfield: coherent tiles. 62 x 45 leaves partial tiles at the
 // right and bottom edges (lanes without rays) and a tail of rays in the row packets.
 TEST(MeshPackets, HeightfieldCameraEqualsSingleRaysAndBruteForceOnEveryPath) {
-  const Mesh mesh = scenes::makeHeightfield(33);
+  const Mesh mesh = workloads::makeHeightfield(33);
   for (auto [w, h] : {std::pair{64u, 48u}, std::pair{62u, 45u}}) {
-    const RayStream camera = scenes::makeCoherentRays(w, h);
+    const RayStream camera = workloads::makeCoherentRays(w, h);
     std::vector<Ray> rays;
     for (std::size_t i = 0; i < camera.size(); ++i) rays.push_back(camera[i]);
     const std::size_t hits = checkModes(mesh, rays, std::vector<float>(rays.size(), kInf), w);
@@ -125,8 +125,8 @@ TEST(MeshPackets, CoherentRaysAcrossOctantsEqualSingleRaysAndBruteForceOnEveryPa
 // direction); oblique ones, from scattered points, diverge.
 TEST(MeshPackets, RaysAtSharedVerticesAndEdgesNeverMissOnEveryPath) {
   constexpr std::uint32_t g = 33;
-  const Mesh mesh = scenes::makeHeightfield(g);
-  scenes::Random r(54);
+  const Mesh mesh = workloads::makeHeightfield(g);
+  workloads::Random r(54);
   std::vector<Ray> vertical, oblique;
   for (std::uint32_t j = 1; j + 1 < g; ++j)
     for (std::uint32_t i = 1; i + 1 < g; ++i) {
@@ -153,9 +153,9 @@ SIMDPHYS_ON_EVERY_PATH(MeshPacketsOnPath);
 // padding value) hit nothing and leave the others' answers as they are.
 TEST_P(MeshPacketsOnPath, LanesWithMinusInfinityTMaxHitNothing) {
   if (referencePathActive()) GTEST_SKIP() << "the reference path has no packet kernel";
-  const Mesh mesh = scenes::makeHeightfield(33);
+  const Mesh mesh = workloads::makeHeightfield(33);
   const MeshBvh bvh(mesh);
-  const RayStream camera = scenes::makeCoherentRays(16, 8);
+  const RayStream camera = workloads::makeCoherentRays(16, 8);
   std::vector<float> origin[3], direction[3], tMax;
   for (std::size_t i = 0; i < camera.size(); ++i) {
     for (int k = 0; k < 3; ++k)
@@ -208,7 +208,7 @@ TEST_P(MeshPacketsOnPath, EmptyMeshMissesEveryRay) {
 }
 
 TEST(MeshPacketErrors, BadPacketSizeIsRejected) {
-  const MeshBvh bvh(scenes::makeHeightfield(5));
+  const MeshBvh bvh(workloads::makeHeightfield(5));
   RayStream s;
   s.push({{0, 1, 0}, {0, -1, 0}});
   std::vector<ElementHit> out(1);

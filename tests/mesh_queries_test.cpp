@@ -57,7 +57,7 @@ TEST_P(MeshQueries, TreeStructureOverTriangles) {
 // so it is computed once and every path is run in this process.
 TEST(MeshQueries, SegmentsEqualBruteForceOnEveryPath) {
   const Mesh soup = test::randomSoup(52, 2000, 30, 4);
-  scenes::Random r(53);
+  workloads::Random r(53);
   std::vector<Segment> segments;
   std::vector<ElementHit> expected;
   std::vector<bool> crosses;
@@ -106,7 +106,7 @@ TEST(MeshQueries, OverlapsEqualBruteForceOnEveryPath) {
     Triangle tri;
     std::vector<std::uint32_t> expected[4];  // sphere, box, obb, triangle
   };
-  scenes::Random r(55);
+  workloads::Random r(55);
   std::vector<Query> queries;
   std::size_t found = 0;
   for (int i = 0; i < 200; ++i) {
@@ -142,12 +142,12 @@ TEST(MeshQueries, OverlapsEqualBruteForceOnEveryPath) {
 // Refit after the heightfield's heights change: the same answers as a rebuild on the moved mesh
 // (both equal brute force on it, exactly: the triangle tests do not depend on the tree).
 TEST(MeshQueries, RefitAnswersLikeARebuildOnEveryPath) {
-  Mesh mesh = scenes::makeHeightfield(33);
+  Mesh mesh = workloads::makeHeightfield(33);
   const std::vector<Vec3f> original = mesh.vertices;
   std::vector<Vec3f> moved = mesh.vertices;
   for (Vec3f& v : moved) v.y() = 2 * v.y() + 0.1f * v.x() - 5;
   mesh.vertices = moved;
-  const RayStream rays = scenes::makeIncoherentRays(3000);
+  const RayStream rays = workloads::makeIncoherentRays(3000);
   std::vector<ElementHit> expected;
   for (std::size_t i = 0; i < rays.size(); ++i)
     expected.push_back(test::bruteRaycast(mesh, rays[i]));
@@ -185,13 +185,13 @@ TEST(ProceduralMeshes, BoxAndSphereAreClosedAndFaceOut) {
       EXPECT_GT(t.normal().dot((t.a + t.b + t.c) / 3 - centre), 0) << "triangle " << i;
     }
     const MeshBvh bvh(m);
-    scenes::Random r(56);
+    workloads::Random r(56);
     for (int k = 0; k < 500; ++k)
       EXPECT_TRUE(bvh.raycast({centre, r.unitDirection()}).hit()) << "ray " << k;
   }
   EXPECT_EQ(meshes[0].size(), 12u);
   EXPECT_EQ(meshes[1].size(), 2u * 12 * 7);
-  const Mesh hf = scenes::makeHeightfield(3);
+  const Mesh hf = workloads::makeHeightfield(3);
   ASSERT_EQ(hf.size(), 8u);
   EXPECT_EQ(hf.triangles[1], (std::array<std::uint32_t, 3>{0, 4, 3}));  // W2's second triangle
 }
@@ -213,7 +213,7 @@ TEST(MeshErrors, BadMeshesAreNamed) {
   std::vector<Aabb> bounds = {{{0, 0, 0}, {1, 1, 1}}, {{0, 0, 0}, {-1, 1, 1}}};
   test::expectError([&] { tree.build(bounds, {4, 4}); }, "Bvh::build: bounds 1: min.x");
   test::expectError([&] { tree.build(bounds, {17, 17}); }, "maxLeafSize 17");
-  const MeshBvh bvh(scenes::makeHeightfield(5));
+  const MeshBvh bvh(workloads::makeHeightfield(5));
   std::vector<std::uint32_t> out;
   test::expectError(
       [&] {

@@ -54,11 +54,11 @@ void checkAgainstBruteForce(const Mesh& mesh, const std::vector<Ray>& rays, floa
 }
 
 TEST(MeshRays, HeightfieldSubsetEqualsBruteForceOnEveryPath) {
-  const Mesh mesh = scenes::makeHeightfield(33);  // 2,048 triangles
+  const Mesh mesh = workloads::makeHeightfield(33);  // 2,048 triangles
   std::vector<Ray> rays;
-  const RayStream camera = scenes::makeCoherentRays(64, 48);
+  const RayStream camera = workloads::makeCoherentRays(64, 48);
   for (std::size_t i = 0; i < camera.size(); ++i) rays.push_back(camera[i]);
-  const RayStream random = scenes::makeIncoherentRays(3000);
+  const RayStream random = workloads::makeIncoherentRays(3000);
   for (std::size_t i = 0; i < random.size(); ++i) rays.push_back(random[i]);
   checkAgainstBruteForce(mesh, rays, std::numeric_limits<float>::infinity());
 }
@@ -103,8 +103,8 @@ TEST_P(MeshRaysOnPath, TiesGoToTheSmallerId) {
 // exactly through the vertex or edge point; oblique ones through its rounding.
 TEST(MeshRays, RaysAtSharedVerticesAndEdgesNeverMissOnEveryPath) {
   constexpr std::uint32_t g = 33;
-  const Mesh mesh = scenes::makeHeightfield(g);
-  scenes::Random r(44);
+  const Mesh mesh = workloads::makeHeightfield(g);
+  workloads::Random r(44);
   std::vector<Ray> rays;
   for (std::uint32_t j = 1; j + 1 < g; ++j)
     for (std::uint32_t i = 1; i + 1 < g; ++i) {
@@ -136,26 +136,26 @@ TEST(MeshRays, RaysAtSharedVerticesAndEdgesNeverMissOnEveryPath) {
 // the double-precision grid walk (to keep the test short). The inputs, the tree and the reference
 // hits depend on no path, so they are built once and every path is run in this one process.
 TEST(MeshRays, W2FiguresAndDoubleReferenceOnEveryPath) {
-  const Mesh mesh = scenes::makeHeightfield();
+  const Mesh mesh = workloads::makeHeightfield();
   const MeshBvh bvh(mesh);
   for (auto [rays, figures] :
-       {std::pair{scenes::makeCoherentRays(), scenes::kCoherentReference},
-        std::pair{scenes::makeIncoherentRays(), scenes::kIncoherentReference}}) {
+       {std::pair{workloads::makeCoherentRays(), workloads::kCoherentReference},
+        std::pair{workloads::makeIncoherentRays(), workloads::kIncoherentReference}}) {
     RayStream sample;
     std::vector<std::size_t> sampled;
     for (std::size_t i = 0; i < rays.size(); i += 7) sample.push(rays[i]), sampled.push_back(i);
-    const std::vector<scenes::ReferenceHit> reference =
-        scenes::referenceHits(mesh, scenes::kRaysGrid, sample);
+    const std::vector<workloads::ReferenceHit> reference =
+        workloads::referenceHits(mesh, workloads::kRaysGrid, sample);
     test::forEveryPath([&] {
       std::vector<ElementHit> hits(rays.size());
       bvh.raycast(rays, hits);
-      const scenes::RaysReference found = scenes::summarise(hits);
+      const workloads::RaysReference found = workloads::summarise(hits);
       EXPECT_EQ(found.hits, figures.hits);
       // The figure has 8 significant digits.
-      EXPECT_NEAR(found.sumT, figures.sumT, scenes::kSumTTolerance * figures.sumT);
+      EXPECT_NEAR(found.sumT, figures.sumT, workloads::kSumTTolerance * figures.sumT);
       std::vector<ElementHit> sampleHits;
       for (std::size_t i : sampled) sampleHits.push_back(hits[i]);
-      const auto c = scenes::compareWithReference(sampleHits, reference);
+      const auto c = workloads::compareWithReference(sampleHits, reference);
       // W2: rays may differ from the double reference only where its hit is within 1e-5 of an
       // edge.
       EXPECT_EQ(c.differ, 0u);
@@ -168,7 +168,7 @@ TEST(MeshRays, W2FiguresAndDoubleReferenceOnEveryPath) {
 }
 
 TEST(MeshRayErrors, BadRaysAreRejected) {
-  const MeshBvh bvh(scenes::makeHeightfield(5));
+  const MeshBvh bvh(workloads::makeHeightfield(5));
   test::expectError(
       [&] {
         bvh.raycast({{0, 1, 0}, {0, 0, 0}});

@@ -131,7 +131,7 @@ TEST_P(PairEventsTest, ScriptedMoves2d) {
 TEST_P(PairEventsTest, RandomMoves3d) {
   // Every box jumps by up to a box size each step, so many pairs begin and end.
   auto move = [](BoxStream& b, int step) {
-    scenes::Random r(100 + std::uint64_t(step));
+    workloads::Random r(100 + std::uint64_t(step));
     for (std::size_t i = 0; i < b.size(); ++i) {
       const Vec3f d(r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2));
       b.set(i, {b[i].min + d, b[i].max + d});
@@ -143,14 +143,14 @@ TEST_P(PairEventsTest, RandomMoves3d) {
 
 TEST_P(PairEventsTest, RandomMoves2d) {
   auto move = [](RectStream& s, int step) {
-    scenes::Random r(200 + std::uint64_t(step));
+    workloads::Random r(200 + std::uint64_t(step));
     for (std::size_t i = 0; i < s.size(); ++i) {
       const Vec2f d(r.uniform(-2, 2), r.uniform(-2, 2));
       s.set(i, {s[i].min + d, s[i].max + d});
     }
   };
   RectStream rects;
-  scenes::Random r(42);
+  workloads::Random r(42);
   for (int i = 0; i < 1200; ++i) {
     const Vec2f c(r.uniform(-40, 40), r.uniform(-40, 40));
     rects.push(Rect::fromCenter(c, Vec2f(r.uniform(0, 2), r.uniform(0, 2))));

@@ -169,7 +169,7 @@ TYPED_TEST(Quadtree2d, ErrorsSayWhatAndWhere) {
 // A box on the 0.5 grid: corner in [-4, 68) around bounds [0, 64]^2 (some stick out or lie
 // outside), sides of 0 to 6 (zero-size boxes included).
 template <class T>
-RectT<T> randomBox(scenes::Random& r, double offset) {
+RectT<T> randomBox(workloads::Random& r, double offset) {
   const auto snap = [](float x) { return std::floor(double(x) * 2) / 2; };
   const double x = snap(r.uniform(-4, 68)), y = snap(r.uniform(-4, 68));
   const double w = snap(r.uniform(0, 6.5f)), h = snap(r.uniform(0, 6.5f));
@@ -179,7 +179,7 @@ RectT<T> randomBox(scenes::Random& r, double offset) {
 // Queries: rects like the boxes but up to 20 wide, points on the grid and off it, circles with
 // radii on the grid (exact touching) and off it.
 template <class T>
-void expectQueriesMatch(const QuadtreeT<T>& tree, const Truth<T>& truth, scenes::Random& r,
+void expectQueriesMatch(const QuadtreeT<T>& tree, const Truth<T>& truth, workloads::Random& r,
                         double offset, const std::string& where) {
   tree.checkInvariants();
   ASSERT_EQ(tree.size(), truth.size()) << where;
@@ -204,7 +204,7 @@ template <class T>
 void randomScenario(typename QuadtreeT<T>::Config config, std::uint64_t seed, double offset) {
   const std::string where = "capacity " + std::to_string(config.nodeCapacity) + ", depth " +
                             std::to_string(config.maxDepth) + ", offset " + std::to_string(offset);
-  scenes::Random r(seed);
+  workloads::Random r(seed);
   QuadtreeT<T> tree(rect<T>(offset, offset, offset + 64, offset + 64), config);
   Truth<T> truth;
   std::vector<std::uint32_t> ids;
@@ -273,7 +273,7 @@ TYPED_TEST(Quadtree2d, CoordinatesAt1e5EqualBruteForce) {
 
 TYPED_TEST(Quadtree2d, PairsDoNotDependOnInsertionOrder) {
   using T = TypeParam;
-  scenes::Random r(31);
+  workloads::Random r(31);
   std::vector<RectT<T>> boxes;
   for (int i = 0; i < 300; ++i) boxes.push_back(randomBox<T>(r, 0));
   QuadtreeT<T> forward(rect<T>(0, 0, 64, 64), {6, 2}), backward(rect<T>(0, 0, 64, 64), {6, 2});

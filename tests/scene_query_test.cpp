@@ -65,7 +65,7 @@ SIMDPHYS_ON_EVERY_PATH(SceneOctree);
 // The exact figure of workload W6 (102,099 boxes) through the octree and the BVH, on every path.
 // The workload and its two trees depend on no path: built once, every path run in this process.
 TEST(SceneOctreeW6, BoxesThroughOctreeAndBvhOnEveryPath) {
-  const scenes::CullWorkload w = scenes::makeCullWorkload(1'000'000);
+  const workloads::CullWorkload w = workloads::makeCullWorkload(1'000'000);
   const Octree octree(w.boxes);
   BoxStream boxes;
   for (std::size_t i = 0; i < w.boxes.size(); ++i) boxes.push(w.boxes[i]);
@@ -75,7 +75,7 @@ TEST(SceneOctreeW6, BoxesThroughOctreeAndBvhOnEveryPath) {
     cull(w.frustum, w.boxes, flat);
     octree.cull(w.frustum, viaOctree);
     cull(w.frustum, bvh, w.boxes, viaBvh);
-    EXPECT_EQ(flat.size(), scenes::kCullBoxesVisible);
+    EXPECT_EQ(flat.size(), workloads::kCullBoxesVisible);
     EXPECT_EQ(viaOctree, flat);
     EXPECT_EQ(viaBvh, flat);
   });

@@ -8,7 +8,7 @@
 #include "simdphys/geometry3d/raycast.hpp"
 #include "workloads.hpp"
 
-namespace simdphys::scenes {
+namespace simdphys::workloads {
 
 double heightfieldHeight(double x, double z) {
   return 8 * std::sin(0.07 * x) * std::cos(0.05 * z) + 3 * std::sin(0.31 * x + 0.17 * z);
@@ -185,4 +185,4 @@ ReferenceComparison compareWithReference(std::span<const ElementHit> hits,
   return c;
 }
 
-}  // namespace simdphys::scenes
+}  // namespace simdphys::workloads

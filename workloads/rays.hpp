@@ -10,7 +10,7 @@
 #include "simdphys/mesh.hpp"
 #include "simdphys/mesh_bvh.hpp"
 
-namespace simdphys::scenes {
+namespace simdphys::workloads {
 
 inline constexpr std::uint32_t kRaysGrid = 513;  // G: 524,288 triangles
 inline constexpr std::uint32_t kCameraWidth = 1024, kCameraHeight = 768;
@@ -65,4 +65,4 @@ struct ReferenceComparison {
 ReferenceComparison compareWithReference(std::span<const ElementHit> hits,
                                          std::span<const ReferenceHit> reference);
 
-}  // namespace simdphys::scenes
+}  // namespace simdphys::workloads

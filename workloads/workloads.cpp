@@ -5,7 +5,7 @@
 
 #include "simdphys/geometry2d/collisions.hpp"
 
-namespace simdphys::scenes {
+namespace simdphys::workloads {
 
 std::uint64_t Random::next() {
   std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
@@ -157,4 +157,4 @@ std::uint64_t collidingPairs(const Shapes2dWorkload& w, std::span<const Pair> ca
   return count;
 }
 
-}  // namespace simdphys::scenes
+}  // namespace simdphys::workloads

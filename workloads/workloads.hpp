@@ -12,7 +12,7 @@
 #include "simdphys/geometry3d.hpp"
 #include "simdphys/scene/frustum.hpp"
 
-namespace simdphys::scenes {
+namespace simdphys::workloads {
 
 // SplitMix64 and the float draws built on it.
 class Random {
@@ -79,4 +79,4 @@ const Shapes2dReference& shapes2dReference(std::size_t shapes);  // throws Error
 // The narrowphase: how many of the candidate pairs (shape indices) intersect.
 std::uint64_t collidingPairs(const Shapes2dWorkload& w, std::span<const Pair> candidates);
 
-}  // namespace simdphys::scenes
+}  // namespace simdphys::workloads

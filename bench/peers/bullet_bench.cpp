@@ -132,7 +132,7 @@ void registerPairs(std::size_t n) {
       state.ResumeTiming();
     }
     state.SetItemsProcessed(std::int64_t(state.iterations() * n));
-    state.counters["checksum_ok"] = scenes::pairChecksum(pairs, n) == ref.checksum ? 1 : 0;
+    state.counters["checksum_ok"] = workloads::pairChecksum(pairs, n) == ref.checksum ? 1 : 0;
     checkExact(state, pairs.size(), ref.pairs);
   });
 }

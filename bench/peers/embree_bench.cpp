@@ -137,7 +137,7 @@ template <int K, class Packet,
           void (*IntersectK)(const int*, RTCScene, RTCIntersectContext*, Packet*)>
 void intersectTiles(RTCScene scene, RTCIntersectContextFlags flags, const RayStream& rays,
                     std::vector<ElementHit>& hits) {
-  constexpr std::uint32_t w = scenes::kCameraWidth, h = scenes::kCameraHeight, rows = K / 4;
+  constexpr std::uint32_t w = workloads::kCameraWidth, h = workloads::kCameraHeight, rows = K / 4;
   static_assert(w % 4 == 0 && h % rows == 0);
   RTCIntersectContext c = context(flags);
 #pragma omp parallel for schedule(dynamic, 16)

@@ -29,14 +29,14 @@ namespace {
 using namespace simdphys;
 
 Mat4f place(float x, float z, float lift, float scale, float yaw = 0) {
-  const float y = float(scenes::heightfieldHeight(x, z)) + lift * scale;
+  const float y = float(workloads::heightfieldHeight(x, z)) + lift * scale;
   return transform(Vec3f::Constant(scale), rotationY(yaw), Vec3f(x, y, z));
 }
 
 // The terrain, then objects standing on it in front of the camera.
 Scene buildScene() {
   Scene scene;
-  scene.add({std::make_shared<const MeshBvh>(scenes::makeHeightfield())});
+  scene.add({std::make_shared<const MeshBvh>(workloads::makeHeightfield())});
   const auto cube =
       std::make_shared<const MeshBvh>(boxMesh({Vec3f::Constant(-0.5f), Vec3f::Constant(0.5f)}));
   const auto ball = std::make_shared<const MeshBvh>(sphereMesh(Vec3f::Zero(), 1, 16, 32));
@@ -54,7 +54,7 @@ Scene buildScene() {
   // a slab tilted on the ball (a grandchild).
   const auto tower =
       scene.add({cube, transform(Vec3f(6, 30, 6), Mat3f::Identity(),
-                                 Vec3f(0, float(scenes::heightfieldHeight(0, -5)) + 15, -5))});
+                                 Vec3f(0, float(workloads::heightfieldHeight(0, -5)) + 15, -5))});
   const auto top = scene.add(
       {Sphere{Vec3f::Zero(), 1},
        transform(Vec3f(1.0f / 6, 1.0f / 30, 1.0f / 6) * 5, Mat3f::Identity(), Vec3f(0, 0.5f, 0)),
@@ -87,8 +87,8 @@ std::uint8_t channel(float v) { return std::uint8_t(std::clamp(v, 0.0f, 1.0f) * 
 
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "render.png";
-  const int width = argc > 3 ? std::atoi(argv[2]) : int(scenes::kCameraWidth);
-  const int height = argc > 3 ? std::atoi(argv[3]) : int(scenes::kCameraHeight);
+  const int width = argc > 3 ? std::atoi(argv[2]) : int(workloads::kCameraWidth);
+  const int height = argc > 3 ? std::atoi(argv[3]) : int(workloads::kCameraHeight);
   try {
     const Scene scene = buildScene();
     // W2's camera: at (0, 60, -140) looking at the origin, 60 degrees vertical field of view.
