@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace simdphys {
 
@@ -21,5 +22,35 @@ struct Handle {
 inline std::string toString(const Handle& h) {
   return "slot " + std::to_string(h.slot) + ", generation " + std::to_string(h.generation);
 }
+
+// The slots of a dense container: handle -> index and index -> handle. The container adds its
+// element at index size() with add(), and on remove() moves its last element into the index
+// remove() returns, as the table does with the handles.
+class HandleTable {
+ public:
+  std::size_t size() const { return slotOf_.size(); }
+  bool contains(Handle h) const {
+    return h.slot < slots_.size() && slots_[h.slot].generation == h.generation && h.generation != 0;
+  }
+  // The index of h's element. Throws Error naming `where`, the element kind `what` ("particle")
+  // and the handle if h is out of range or stale.
+  std::uint32_t index(Handle h, const char* where, const char* what) const;
+  Handle handle(std::uint32_t index) const {
+    return {slotOf_[index], slots_[slotOf_[index]].generation};
+  }
+  Handle add();
+  // Frees h's slot (its generation moves on) and returns the index whose element the container
+  // must overwrite with its last one before dropping the last. Throws as index() does.
+  std::uint32_t remove(Handle h, const char* where, const char* what);
+  void clear() { *this = HandleTable(); }
+
+ private:
+  struct Slot {
+    std::uint32_t index, generation;
+  };
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> slotOf_;  // index -> slot
+  std::vector<std::uint32_t> free_;
+};
 
 }  // namespace simdphys

@@ -12,5 +12,8 @@
 #include "simdphys/math.hpp"
 #include "simdphys/mesh.hpp"
 #include "simdphys/mesh_bvh.hpp"
+#include "simdphys/obstacles.hpp"
 #include "simdphys/pair_finder.hpp"
+#include "simdphys/particles.hpp"
 #include "simdphys/scene.hpp"  // every header of scene/
+#include "simdphys/world.hpp"

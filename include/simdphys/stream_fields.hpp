@@ -84,4 +84,11 @@ struct Ray {
   static constexpr float kPad[kCount] = {0, 0, 0, 0, 0, 1, -kPadInf};
 };
 
+// Particles (particles.hpp): position, velocity, inverse mass and the force set on each. Padding:
+// inverse mass 0, a pinned particle, which the step neither moves nor collides.
+struct Particle {
+  enum : std::size_t { x, y, z, vx, vy, vz, invMass, fx, fy, fz, kCount };
+  static constexpr float kPad[kCount] = {};
+};
+
 }  // namespace simdphys::fields

@@ -62,6 +62,12 @@ class StreamSet {
     store(size() - 1, values);
   }
   float value(std::size_t k, std::size_t i) const { return fields_[k][i]; }
+  // Removes element i, moving the last element into its place (dense, as handles want it).
+  void eraseSwap(std::size_t i) {
+    const std::size_t last = size() - 1;
+    for (Stream<float>& f : fields_) f[i] = f[last];
+    resize(last);
+  }
   // push and set of a stream of shapes: the shape checked by its validate() (primitives.hpp),
   // errors named by `where` ("BoxStream::push") and the element, then its values stored. A
   // rejected shape changes nothing.
@@ -77,6 +83,9 @@ class StreamSet {
     validate(shape, detail::at(where, i));
     store(i, values);
   }
+  // Field f's whole padded array, for a kernel that stores whole vectors and writes back the
+  // padding's values unchanged (a particle step leaves pinned lanes as they are).
+  float* paddedData(std::size_t f) { return fields_[f].data(); }
   // Field f's size() live elements, to write in place: the padding is out of reach, so it stays
   // inert whatever the owner writes.
   std::span<float> writable(std::size_t f) { return fields_[f].view(); }

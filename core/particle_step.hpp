@@ -1,0 +1,40 @@
+// What a particle step kernel is given, Eigen-free so that it crosses from the library to the
+// kernels (simd/particles.cpp): one system's settings for one substep and the static obstacles as
+// flat rows. The scalar reference (src/reference/particles/step-inl.hpp) defines the arithmetic.
+#pragma once
+
+#include <cstdint>
+
+namespace simdphys::core {
+
+// ParticleSettings for one substep: dt is the substep, damping its share of the per-step factor.
+struct ParticleStepParams {
+  std::uint32_t integrator;  // Integrator's value
+  float gravity[3];
+  float dt, damping, drag, restitution, friction, threshold, skin;
+  int maxBounces;
+  bool forces;  // the force fields are set or drag is on: a = g + w (f - drag v)
+};
+
+// One obstacle (obstacles.hpp), in the order the obstacles are tested.
+struct ObstacleRow {
+  enum Kind : std::uint32_t { kPlane, kSphere, kAabb, kObb };
+  Kind kind;
+  // kPlane: normal (0..2), d (3). kSphere: centre (0..2), radius (3). kAabb: min (0..2), max
+  // (3..5). kObb: centre (0..2), half extents (3..5), axes (6..14), column c (the box's local
+  // axis c) at 6 + 3 c, as ObbT::axes.col(c).
+  float v[15];
+};
+
+// What the particles met (StepProfile's counters), summed over a kernel call.
+struct ParticleCounts {
+  std::uint64_t contacts = 0, pushedOut = 0, bounceLimited = 0;
+  ParticleCounts& operator+=(const ParticleCounts& o) {
+    contacts += o.contacts;
+    pushedOut += o.pushedOut;
+    bounceLimited += o.bounceLimited;
+    return *this;
+  }
+};
+
+}  // namespace simdphys::core

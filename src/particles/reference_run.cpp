@@ -1,0 +1,50 @@
+// testing/particles.hpp: a particle system stepped by the double-precision reference.
+#include <cmath>
+
+#include "testing/particles.hpp"
+
+namespace simdphys::test {
+
+ParticlesD toDouble(const ParticleSystem& s) {
+  ParticlesD p;
+  for (std::uint32_t i = 0; i < s.size(); ++i) {
+    const Handle h = s.handle(i);
+    p.x.push_back(s.position(h).cast<double>());
+    p.v.push_back(s.velocity(h).cast<double>());
+    p.invMass.push_back(s.invMass()[i]);
+  }
+  // The forces are write-only in the API: read them from the streams.
+  const auto& fx = s.field(fields::Particle::fx);
+  const auto& fy = s.field(fields::Particle::fy);
+  const auto& fz = s.field(fields::Particle::fz);
+  for (std::uint32_t i = 0; i < s.size(); ++i) p.force.emplace_back(fx[i], fy[i], fz[i]);
+  return p;
+}
+
+core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, const World& world) {
+  const ParticleSettings& s = system.settings();
+  const WorldSettings& w = world.settings();
+  std::vector<ObstacleShapeT<double>> shapes;
+  for (const ObstacleShape& o : world.obstacles().shapes())
+    shapes.push_back(
+        std::visit([](const auto& x) { return ObstacleShapeT<double>(cast<double>(x)); }, o));
+  reference::ParticleStep<double> step{s.integrator,
+                                       s.gravity.cast<double>(),
+                                       double(w.timeStep) / w.substeps,
+                                       std::pow(double(s.damping), 1.0 / w.substeps),
+                                       s.drag,
+                                       s.restitution,
+                                       s.friction,
+                                       s.restitutionThreshold,
+                                       s.skin,
+                                       s.maxBounces,
+                                       system.hasForces() || s.drag != 0};
+  core::ParticleCounts counts;
+  for (int sub = 0; sub < w.substeps; ++sub)
+    for (std::size_t i = 0; i < p.x.size(); ++i)
+      reference::stepParticle<double>(step, shapes, p.x[i], p.v[i], p.invMass[i], p.force[i],
+                                      counts);
+  return counts;
+}
+
+}  // namespace simdphys::test

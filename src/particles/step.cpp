@@ -1,0 +1,99 @@
+// Stepping a particle system on the active path (step.hpp).
+#include "src/particles/step.hpp"
+
+#include <omp.h>
+
+#include "src/reference/particles/step-inl.hpp"
+
+namespace simdphys::detail {
+
+namespace F = fields;
+
+core::View<F::Particle, float> ParticleStreams::view(ParticleSystem& s) {
+  core::View<F::Particle, float> v{{}, s.size(), s.padded()};
+  for (std::size_t f = 0; f < F::Particle::kCount; ++f) v.field[f] = s.paddedData(f);
+  return v;
+}
+
+std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles) {
+  std::vector<core::ObstacleRow> rows;
+  for (const ObstacleShape& shape : obstacles.shapes()) {
+    core::ObstacleRow r{};
+    const auto put = [&](int at, const Vec3f& v) {
+      for (int k = 0; k < 3; ++k) r.v[at + k] = v[k];
+    };
+    if (const auto* p = std::get_if<Plane>(&shape)) {
+      r.kind = core::ObstacleRow::kPlane, put(0, p->normal), r.v[3] = p->d;
+    } else if (const auto* s = std::get_if<Sphere>(&shape)) {
+      r.kind = core::ObstacleRow::kSphere, put(0, s->center), r.v[3] = s->radius;
+    } else if (const auto* b = std::get_if<Aabb>(&shape)) {
+      r.kind = core::ObstacleRow::kAabb, put(0, b->min), put(3, b->max);
+    } else {
+      const Obb& o = std::get<Obb>(shape);
+      r.kind = core::ObstacleRow::kObb, put(0, o.center), put(3, o.halfExtents);
+      for (int c = 0; c < 3; ++c) put(6 + 3 * c, o.axes.col(c));
+    }
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+namespace {
+
+// Particles per partition: a multiple of every lane count, large enough that a partition's
+// scheduling costs little against its work, small enough that 100,000 particles split evenly.
+constexpr std::size_t kPartition = 4096;
+
+core::ParticleCounts referenceRange(const core::View<F::Particle, float>& v, std::size_t begin,
+                                    std::size_t end, std::span<const ObstacleShape> shapes,
+                                    const core::ParticleStepParams& params) {
+  const reference::ParticleStep<float> p = reference::particleStep<float>(params);
+  core::ParticleCounts counts;
+  const auto load = [&](std::size_t f, std::size_t i) {
+    return Vec3f(v[f][i], v[f + 1][i], v[f + 2][i]);
+  };
+  for (std::size_t i = begin; i < end; ++i) {
+    Vec3f x = load(F::Particle::x, i), vel = load(F::Particle::vx, i);
+    reference::stepParticle<float>(p, shapes, x, vel, v[F::Particle::invMass][i],
+                                   load(F::Particle::fx, i), counts);
+    for (int k = 0; k < 3; ++k) v[F::Particle::x + k][i] = x[k], v[F::Particle::vx + k][i] = vel[k];
+  }
+  return counts;
+}
+
+}  // namespace
+
+core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obstacles,
+                                   std::span<const core::ObstacleRow> rows, float dt, float damping,
+                                   int threads) {
+  const ParticleSettings& s = system.settings();
+  core::ParticleStepParams params{};
+  params.integrator = std::uint32_t(s.integrator);
+  for (int k = 0; k < 3; ++k) params.gravity[k] = s.gravity[k];
+  params.dt = dt, params.damping = damping, params.drag = s.drag;
+  params.restitution = s.restitution, params.friction = s.friction;
+  params.threshold = s.restitutionThreshold, params.skin = s.skin;
+  params.maxBounces = s.maxBounces;
+  params.forces = system.hasForces() || s.drag != 0;
+  (void)rows;  // the SIMD kernel's form of the obstacles
+
+  const core::View<F::Particle, float> v = ParticleStreams::view(system);
+  const std::size_t parts = (v.count + kPartition - 1) / kPartition;
+  std::vector<core::ParticleCounts> counts(parts);
+  const auto run = [&](std::size_t part) {
+    const std::size_t begin = part * kPartition, end = std::min(v.count, begin + kPartition);
+    counts[part] = referenceRange(v, begin, end, obstacles.shapes(), params);
+  };
+  if (parts > 1) {
+    const int t = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(static) num_threads(t)
+    for (std::size_t part = 0; part < parts; ++part) run(part);
+  } else if (parts == 1) {
+    run(0);
+  }
+  core::ParticleCounts total;
+  for (const core::ParticleCounts& c : counts) total += c;
+  return total;
+}
+
+}  // namespace simdphys::detail

@@ -1,0 +1,29 @@
+// Stepping a particle system (particles.hpp) on the active path: the reference, particle by
+// particle, or the SIMD kernel, over fixed partitions run in parallel.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/particle_step.hpp"
+#include "core/view.hpp"
+#include "simdphys/obstacles.hpp"
+#include "simdphys/particles.hpp"
+
+namespace simdphys::detail {
+
+struct ParticleStreams {
+  // The system's fields, whole padded arrays, to step in place.
+  static core::View<fields::Particle, float> view(ParticleSystem& system);
+};
+
+// The obstacles as the kernels read them.
+std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles);
+
+// One substep of length dt for every particle of the system, with `damping` the substep's share
+// of the per-step factor; what the particles met.
+core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obstacles,
+                                   std::span<const core::ObstacleRow> rows, float dt, float damping,
+                                   int threads);
+
+}  // namespace simdphys::detail

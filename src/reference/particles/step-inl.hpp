@@ -1,0 +1,246 @@
+// The scalar reference of a particle step (particles.hpp), written once on Eigen for float (the
+// reference path) and double (the truth errors are measured against): the integrators, the
+// collision against the static obstacles along the path travelled, and the response. The SIMD
+// kernel (simd/particles.cpp) mirrors it operation for operation.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <variant>
+
+#include "core/particle_step.hpp"
+#include "simdphys/obstacles.hpp"
+#include "simdphys/particles.hpp"
+#include "src/reference/geometry3d/raycast-inl.hpp"
+
+namespace simdphys::reference {
+
+// One system's settings for one substep, in T.
+template <class T>
+struct ParticleStep {
+  Integrator integrator;
+  Vec3<T> gravity;
+  T dt, damping, drag, restitution, friction, threshold, skin;
+  int maxBounces;
+  bool forces;  // read the force fields, or drag is on: a depends on more than gravity
+};
+
+using core::ParticleCounts;
+
+// One step of length dt of x and v under the acceleration accel(x) (particles.hpp's formulas;
+// damping is the caller's). The world passes a constant; the closed-form tests an oscillator's.
+template <class T, class Accel>
+void integrate(Integrator integrator, Vec3<T>& x, Vec3<T>& v, T dt, Accel&& accel) {
+  const Vec3<T> a = accel(x);
+  switch (integrator) {
+    case Integrator::kExplicitEuler:
+      x = x + v * dt;
+      v = v + a * dt;
+      break;
+    case Integrator::kSemiImplicitEuler:
+      v = v + a * dt;
+      x = x + v * dt;
+      break;
+    case Integrator::kVelocityVerlet: {
+      x = x + v * dt + a * (T(0.5) * dt * dt);
+      const Vec3<T> a1 = accel(x);
+      v = v + (a + a1) * (T(0.5) * dt);
+      break;
+    }
+    case Integrator::kPositionVerlet:
+      x = x + v * dt + a * (dt * dt);
+      v = v + a * dt;
+      break;
+  }
+}
+
+// Where a point strictly inside a solid leaves it by the shortest way, and the outward normal
+// there; nothing if the point is not strictly inside.
+template <class T>
+struct Exit {
+  Vec3<T> point, normal;
+};
+
+template <class T>
+std::optional<Exit<T>> exitOf(const PlaneT<T>& plane, const Vec3<T>& p) {
+  const T f = plane.normal.dot(p) + plane.d;
+  if (!(f < 0)) return std::nullopt;
+  return Exit<T>{p - f * plane.normal, plane.normal};
+}
+
+template <class T>
+std::optional<Exit<T>> exitOf(const SphereT<T>& sphere, const Vec3<T>& p) {
+  const Vec3<T> e = p - sphere.center;
+  const T e2 = e.squaredNorm();
+  if (!(e2 < sphere.radius * sphere.radius)) return std::nullopt;
+  // At the very centre every way is shortest: up (+y), as documented.
+  const Vec3<T> n = e2 > 0 ? Vec3<T>(e / std::sqrt(e2)) : Vec3<T>::UnitY();
+  return Exit<T>{sphere.center + n * sphere.radius, n};
+}
+
+// An AABB is left through the face of least depth (ties: the lowest axis, its min face first).
+template <class T>
+std::optional<Exit<T>> exitOf(const AabbT<T>& box, const Vec3<T>& p) {
+  int axis = 0;
+  bool toMax = false;
+  T depth = std::numeric_limits<T>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const T below = p[k] - box.min[k], above = box.max[k] - p[k];
+    if (!(below > 0 && above > 0)) return std::nullopt;
+    if (below < depth) depth = below, axis = k, toMax = false;
+    if (above < depth) depth = above, axis = k, toMax = true;
+  }
+  Exit<T> e{p, Vec3<T>::Zero()};
+  e.point[axis] = toMax ? box.max[axis] : box.min[axis];
+  e.normal[axis] = toMax ? T(1) : T(-1);
+  return e;
+}
+
+// An OBB is left through the face of least depth h - |q| of the local point q (ties: the lowest
+// axis), on the side of q's sign (+ at 0).
+template <class T>
+std::optional<Exit<T>> exitOf(const ObbT<T>& box, const Vec3<T>& p) {
+  const Vec3<T> q = box.axes.transpose() * (p - box.center);
+  int axis = 0;
+  T depth = std::numeric_limits<T>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const T d = box.halfExtents[k] - std::abs(q[k]);
+    if (!(d > 0)) return std::nullopt;
+    if (d < depth) depth = d, axis = k;
+  }
+  const Vec3<T> n =
+      std::signbit(q[axis]) ? Vec3<T>(-box.axes.col(axis)) : Vec3<T>(box.axes.col(axis));
+  return Exit<T>{p + n * depth, n};
+}
+
+// The first surface the path x0 -> x1 enters: the fraction s of the path and the outward normal
+// there. Planes are entered from their front; solids through their surface (a path starting
+// inside enters nothing).
+template <class T>
+struct Entry {
+  T s;
+  Vec3<T> normal;
+};
+
+template <class T>
+std::optional<Entry<T>> entryOf(const PlaneT<T>& plane, const Vec3<T>& x0, const Vec3<T>& d) {
+  const T f0 = plane.normal.dot(x0) + plane.d;
+  const T rate = plane.normal.dot(d);
+  if (!(f0 >= 0 && f0 + rate < 0)) return std::nullopt;
+  return Entry<T>{f0 / -rate, plane.normal};
+}
+
+template <class T>
+std::optional<Entry<T>> fromHit(const std::optional<RayHitT<T>>& h) {
+  if (!h || h->inside) return std::nullopt;
+  return Entry<T>{h->t, h->normal};
+}
+
+template <class T>
+std::optional<Entry<T>> entryOf(const SphereT<T>& s, const Vec3<T>& x0, const Vec3<T>& d) {
+  return fromHit(detail::rays::hitSphere(s, x0, d, T(1)));
+}
+template <class T>
+std::optional<Entry<T>> entryOf(const AabbT<T>& b, const Vec3<T>& x0, const Vec3<T>& d) {
+  return fromHit(detail::rays::hitAabb(b.min, b.max, x0, d, T(1)));
+}
+template <class T>
+std::optional<Entry<T>> entryOf(const ObbT<T>& b, const Vec3<T>& x0, const Vec3<T>& d) {
+  return fromHit(detail::rays::hitObb(b, x0, d, T(1)));
+}
+
+// Pushes p out of every obstacle it is strictly inside, in order, to `skin` outside, and takes
+// the part of v into that surface away; counts each push.
+template <class T>
+void pushOut(std::span<const ObstacleShapeT<T>> obstacles, T skin, Vec3<T>& p, Vec3<T>& v,
+             ParticleCounts& counts) {
+  for (const auto& o : obstacles) {
+    const auto e = std::visit([&](const auto& shape) { return exitOf(shape, p); }, o);
+    if (!e) continue;
+    p = e->point + e->normal * skin;
+    const T vn = v.dot(e->normal);
+    if (vn < 0) v = v - e->normal * vn;
+    ++counts.pushedOut;
+  }
+}
+
+// The velocity after meeting a surface of normal n: the normal part reversed and scaled by the
+// restitution (none below the threshold speed), the tangential part reduced by Coulomb friction
+// with the normal impulse, never reversed.
+template <class T>
+Vec3<T> respond(const ParticleStep<T>& p, const Vec3<T>& v, const Vec3<T>& n) {
+  const T vn = v.dot(n);
+  if (!(vn < 0)) return v;
+  const T e = -vn > p.threshold ? p.restitution : T(0);
+  Vec3<T> vt = v - n * vn;
+  const T vtLength = vt.norm();
+  if (vtLength > 0) vt = vt * std::max(T(0), T(1) - p.friction * ((T(1) + e) * -vn) / vtLength);
+  return vt - n * (e * vn);
+}
+
+// One particle's step: forces, damping, integration, then the path x -> x' against the obstacles,
+// up to maxBounces times continued from a contact with the responded velocity for the time left.
+template <class T>
+void stepParticle(const ParticleStep<T>& p, std::span<const ObstacleShapeT<T>> obstacles,
+                  Vec3<T>& x, Vec3<T>& v, T invMass, const Vec3<T>& force, ParticleCounts& counts) {
+  if (!(invMass > 0)) return;  // pinned
+  Vec3<T> a = p.gravity;
+  if (p.forces) a = a + (force - v * p.drag) * invMass;
+  pushOut(obstacles, p.skin, x, v, counts);
+  const auto constant = [&](const Vec3<T>&) { return a; };
+  Vec3<T> x0 = x, v0 = v * p.damping, x1 = x0, v1 = v0;
+  T tau = p.dt;
+  integrate(p.integrator, x1, v1, tau, constant);
+  for (int bounce = 0;; ++bounce) {
+    const Vec3<T> d = x1 - x0;
+    std::optional<Entry<T>> first;
+    for (const auto& o : obstacles) {
+      const auto e = std::visit([&](const auto& shape) { return entryOf(shape, x0, d); }, o);
+      if (e && (!first || e->s < first->s)) first = e;
+    }
+    if (!first) break;
+    ++counts.contacts;
+    const Vec3<T> n = first->normal;
+    Vec3<T> vr = respond(p, Vec3<T>(v0 + a * (first->s * tau)), n);
+    Vec3<T> xs = x0 + d * first->s + n * p.skin;
+    pushOut(obstacles, p.skin, xs, vr, counts);  // a contact in a corner between obstacles
+    x0 = xs;
+    v0 = vr;
+    x1 = xs;
+    v1 = vr;
+    if (bounce == p.maxBounces) {
+      ++counts.bounceLimited;
+      break;
+    }
+    tau = (T(1) - first->s) * tau;
+    integrate(p.integrator, x1, v1, tau, constant);
+  }
+  x = x1;
+  v = v1;
+}
+
+}  // namespace simdphys::reference
+
+namespace simdphys::reference {
+
+// The kernels' parameters in T.
+template <class T>
+ParticleStep<T> particleStep(const core::ParticleStepParams& p) {
+  return {Integrator(p.integrator),
+          Vec3<T>(T(p.gravity[0]), T(p.gravity[1]), T(p.gravity[2])),
+          T(p.dt),
+          T(p.damping),
+          T(p.drag),
+          T(p.restitution),
+          T(p.friction),
+          T(p.threshold),
+          T(p.skin),
+          p.maxBounces,
+          p.forces};
+}
+
+}  // namespace simdphys::reference

@@ -1,0 +1,73 @@
+// World (world.hpp): settings, obstacles, particle systems behind handles, and the step.
+#include "simdphys/world.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "src/particles/step.hpp"
+#include "src/reference/validate-inl.hpp"
+
+namespace simdphys {
+
+void validate(const WorldSettings& s, const char* where) {
+  detail::require(s.timeStep > 0 && s.timeStep <= 1, s.timeStep, where, "timeStep",
+                  "must be in (0, 1] s");
+  detail::require(s.substeps >= 1 && s.substeps <= 1024, s.substeps, where, "substeps",
+                  "must be in [1, 1024]");
+  detail::require(s.threads >= 0, s.threads, where, "threads",
+                  "must be >= 0 (0: OpenMP's default)");
+}
+
+World::World(const WorldSettings& settings) : settings_(settings) { validate(settings, "World"); }
+
+void World::setSettings(const WorldSettings& settings) {
+  validate(settings, "World::setSettings");
+  settings_ = settings;
+}
+
+Handle World::addParticles(const ParticleSettings& settings) {
+  validate(settings, "World::addParticles: system " + std::to_string(systems_.size()));
+  systems_.emplace_back(settings);
+  return systemHandles_.add();
+}
+
+void World::removeParticles(Handle h) {
+  const std::uint32_t i = systemHandles_.remove(h, "World::removeParticles", "particle system");
+  systems_[i] = std::move(systems_.back());
+  systems_.pop_back();
+}
+
+ParticleSystem& World::particles(Handle h) {
+  return systems_[systemHandles_.index(h, "World::particles", "particle system")];
+}
+
+const ParticleSystem& World::particles(Handle h) const {
+  return systems_[systemHandles_.index(h, "World::particles", "particle system")];
+}
+
+void World::step() {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  profile_ = {};
+  if (!systems_.empty()) {
+    const float dt = settings_.timeStep / float(settings_.substeps);
+    const std::vector<core::ObstacleRow> rows = detail::obstacleRows(obstacles_);
+    for (int sub = 0; sub < settings_.substeps; ++sub)
+      for (ParticleSystem& s : systems_) {
+        const float damping = settings_.substeps == 1 ? s.settings().damping
+                                                      : std::pow(s.settings().damping,
+                                                                 1.0f / float(settings_.substeps));
+        const core::ParticleCounts c =
+            detail::stepParticles(s, obstacles_, rows, dt, damping, settings_.threads);
+        profile_.particles.elements += s.size();
+        profile_.contacts += c.contacts;
+        profile_.pushedOut += c.pushedOut;
+        profile_.bounceLimited += c.bounceLimited;
+      }
+    profile_.particles.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  profile_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace simdphys

@@ -1,0 +1,26 @@
+// Test support, not public API: the particle step's scalar reference (integrators, collision) for
+// the closed-form tests, and a particle system stepped in double precision, the truth that the
+// float paths' error is measured against (tests, W4 benchmark).
+#pragma once
+
+#include <vector>
+
+#include "simdphys/world.hpp"
+#include "src/reference/particles/step-inl.hpp"
+
+namespace simdphys::test {
+
+// A system's particles in double.
+struct ParticlesD {
+  std::vector<Vec3d> x, v, force;
+  std::vector<double> invMass;
+};
+
+ParticlesD toDouble(const ParticleSystem& system);
+
+// One world step (its substeps) of the particles by the double reference, with the system's
+// settings and the world's obstacles; what they met.
+core::ParticleCounts stepDouble(ParticlesD& particles, const ParticleSystem& system,
+                                const World& world);
+
+}  // namespace simdphys::test
