@@ -182,8 +182,38 @@ Vec3<T> respond(const ParticleStep<T>& p, const Vec3<T>& v, const Vec3<T>& n) {
   return vt - n * (e * vn);
 }
 
-// One particle's step: forces, damping, integration, then the path x -> x' against the obstacles,
-// up to maxBounces times continued from a contact with the responded velocity for the time left.
+// Resting contact on a surface of normal n for the time tau left: the surface takes the part of
+// the velocity and of the acceleration into it, and Coulomb friction, of magnitude friction times
+// the acceleration it takes, acts against the sliding velocity; if that would stop the particle
+// within tau, it stops, and slides on only by what the rest of a exceeds static friction with.
+template <class T>
+void rest(const ParticleStep<T>& p, const Vec3<T>& n, T tau, Vec3<T>& v, Vec3<T>& a) {
+  const T vn = v.dot(n);
+  if (vn < 0) v = v - n * vn;
+  const T an = a.dot(n);
+  if (!(an < 0)) return;
+  a = a - n * an;
+  const T f = p.friction * -an;
+  const Vec3<T> vt = v - n * v.dot(n);
+  const T speed = vt.norm();
+  if (speed > 0) {
+    const Vec3<T> sliding = a - vt * (f / speed);
+    if ((vt + sliding * tau).dot(vt) > 0) {  // still sliding the same way at the end
+      a = sliding;
+      return;
+    }
+  }
+  v = v - vt;
+  const T at = a.norm();
+  a = at > f ? Vec3<T>(a * (T(1) - f / at)) : Vec3<T>::Zero();
+}
+
+// One particle's step: forces, damping, integration, then the path x -> x' against the obstacles.
+// The first surface the path enters ends it there: a fast impact bounces (respond) and the path
+// goes on from the contact for the time left; a slow one (at most the restitution threshold) is a
+// resting contact, and the path is run again from its start under rest(), so that gravity cannot
+// creep a particle along a surface friction holds it on. At most maxBounces contacts; past them
+// the particle stays at the last one.
 template <class T>
 void stepParticle(const ParticleStep<T>& p, std::span<const ObstacleShapeT<T>> obstacles,
                   Vec3<T>& x, Vec3<T>& v, T invMass, const Vec3<T>& force, ParticleCounts& counts) {
@@ -205,18 +235,24 @@ void stepParticle(const ParticleStep<T>& p, std::span<const ObstacleShapeT<T>> o
     if (!first) break;
     ++counts.contacts;
     const Vec3<T> n = first->normal;
-    Vec3<T> vr = respond(p, Vec3<T>(v0 + a * (first->s * tau)), n);
-    Vec3<T> xs = x0 + d * first->s + n * p.skin;
-    pushOut(obstacles, p.skin, xs, vr, counts);  // a contact in a corner between obstacles
-    x0 = xs;
-    v0 = vr;
-    x1 = xs;
-    v1 = vr;
+    const Vec3<T> vh = v0 + a * (first->s * tau);  // the velocity at the contact
     if (bounce == p.maxBounces) {
       ++counts.bounceLimited;
+      x1 = x0 + d * first->s + n * p.skin;
+      v1 = respond(p, vh, n);
+      pushOut(obstacles, p.skin, x1, v1, counts);
       break;
     }
-    tau = (T(1) - first->s) * tau;
+    if (-vh.dot(n) <= p.threshold) {
+      rest(p, n, tau, v0, a);
+    } else {
+      v0 = respond(p, vh, n);
+      x0 = x0 + d * first->s + n * p.skin;
+      pushOut(obstacles, p.skin, x0, v0, counts);  // a contact in a corner between obstacles
+      tau = (T(1) - first->s) * tau;
+    }
+    x1 = x0;
+    v1 = v0;
     integrate(p.integrator, x1, v1, tau, constant);
   }
   x = x1;
