@@ -19,8 +19,7 @@ struct ParticlesD {
 ParticlesD toDouble(const ParticleSystem& system);
 
 // One world step (its substeps) of the particles by the double reference, with the system's
-// settings and the world's obstacles; what they met.
-core::ParticleCounts stepDouble(ParticlesD& particles, const ParticleSystem& system,
-                                const World& world);
+// settings and the world's obstacles (brought up to date first); what they met.
+core::ParticleCounts stepDouble(ParticlesD& particles, const ParticleSystem& system, World& world);
 
 }  // namespace simdphys::test

@@ -299,3 +299,74 @@ SIMDPHYS_ON_EVERY_PATH(Particles);
 
 }  // namespace
 }  // namespace simdphys
+
+namespace simdphys {
+namespace {
+
+// A quad of two triangles in the plane y = 0, a two-sided surface.
+MeshObstacle floorMesh() {
+  Mesh mesh;
+  mesh.vertices = {{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}};
+  mesh.triangles = {{{0, 2, 1}}, {{0, 3, 2}}};
+  return std::make_shared<const MeshBvh>(mesh);
+}
+
+TEST_P(Particles, MeshesAreTwoSidedSurfacesNothingCrosses) {
+  World world;
+  world.obstacles().add(floorMesh());
+  const Handle s = world.addParticles({.gravity = Vec3f::Zero(), .restitution = 1});
+  // From above and below at 1,000 m/s, through a triangle's inside and exactly along the shared
+  // diagonal x = z (the watertight test lets nothing through the crack).
+  const Handle above = world.particles(s).add({1, 3, -2}, {0, -1000, 0});
+  const Handle below = world.particles(s).add({-1, -3, 2}, {0, 1000, 0});
+  const Handle diagonal = world.particles(s).add({2, 3, 2}, {0, -1000, 0});
+  for (int i = 0; i < 3; ++i) {
+    world.step();
+    EXPECT_GT(world.particles(s).position(above).y(), 0.0f);
+    EXPECT_LT(world.particles(s).position(below).y(), 0.0f);
+    EXPECT_GT(world.particles(s).position(diagonal).y(), 0.0f);
+  }
+  EXPECT_EQ(world.particles(s).velocity(above), Vec3f(0, 1000, 0));  // restitution 1
+}
+
+// More than kFewObstacles bounded obstacles go through the tree: the same answers as testing
+// every obstacle (the reference's set without the tree), bit for bit.
+TEST_P(Particles, ManyObstaclesAreFoundThroughTheTreeWithTheSameAnswers) {
+  World world;
+  world.obstacles().add(Plane{{0, 1, 0}, 0});
+  for (int i = 0; i < 10; ++i)
+    for (int k = 0; k < 10; ++k)
+      world.obstacles().add(Sphere{{2.0f * i - 9, 1, 2.0f * k - 9}, 0.6f + 0.03f * ((i + k) % 5)});
+  world.obstacles().add(floorMesh());
+  world.obstacles().add(rampBox());
+  const Handle s = world.addParticles({.restitution = 0.8f, .friction = 0.2f});
+  for (int i = 0; i < 400; ++i)
+    world.particles(s).add({-10.0f + 0.05f * i, 4.0f + 0.01f * (i % 37), -9.5f + 0.047f * i},
+                           {0.3f * (i % 7) - 1, -2, 0.2f * (i % 5) - 0.4f});
+  std::vector<Vec3f> x, v;
+  for (std::uint32_t i = 0; i < 400; ++i)
+    x.push_back(world.particles(s).position(world.particles(s).handle(i))),
+        v.push_back(world.particles(s).velocity(world.particles(s).handle(i)));
+  const reference::ObstacleSetT<float> all(world.obstacles().shapes());
+  reference::ParticleStep<float> step{
+      Integrator::kVelocityVerlet, {0, -9.82f, 0}, 1.0f / 60, 1, 0, 0.8f, 0.2f, 1, 1e-3f, 4, false};
+  core::ParticleCounts counts;
+  std::uint64_t contacts = 0;
+  for (int n = 0; n < 30; ++n) {
+    world.step();
+    contacts += world.profile().contacts;
+    for (std::uint32_t i = 0; i < 400; ++i)
+      reference::stepParticle<float>(step, all, x[i], v[i], 1.0f, Vec3f::Zero(), counts);
+  }
+  ASSERT_NE(world.obstacles().tree(), nullptr);
+  for (std::uint32_t i = 0; i < 400; ++i) {
+    const Handle h = world.particles(s).handle(i);
+    EXPECT_EQ(world.particles(s).position(h), x[i]) << i;
+    EXPECT_EQ(world.particles(s).velocity(h), v[i]) << i;
+  }
+  EXPECT_EQ(contacts, counts.contacts);
+  EXPECT_GT(counts.contacts, 400u);  // the case is not empty
+}
+
+}  // namespace
+}  // namespace simdphys

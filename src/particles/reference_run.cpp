@@ -21,13 +21,22 @@ ParticlesD toDouble(const ParticleSystem& s) {
   return p;
 }
 
-core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, const World& world) {
+core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, World& world) {
+  world.obstacles().update();
   const ParticleSettings& s = system.settings();
   const WorldSettings& w = world.settings();
   std::vector<ObstacleShapeT<double>> shapes;
   for (const ObstacleShape& o : world.obstacles().shapes())
-    shapes.push_back(
-        std::visit([](const auto& x) { return ObstacleShapeT<double>(cast<double>(x)); }, o));
+    shapes.push_back(std::visit(
+        [](const auto& x) -> ObstacleShapeT<double> {
+          if constexpr (std::is_same_v<std::decay_t<decltype(x)>, MeshObstacle>)
+            return x;
+          else
+            return cast<double>(x);
+        },
+        o));
+  const Obstacles& o = world.obstacles();
+  const reference::ObstacleSetT<double> set(shapes, o.tree(), o.bounded(), o.planes());
   reference::ParticleStep<double> step{s.integrator,
                                        s.gravity.cast<double>(),
                                        double(w.timeStep) / w.substeps,
@@ -42,8 +51,7 @@ core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, con
   core::ParticleCounts counts;
   for (int sub = 0; sub < w.substeps; ++sub)
     for (std::size_t i = 0; i < p.x.size(); ++i)
-      reference::stepParticle<double>(step, shapes, p.x[i], p.v[i], p.invMass[i], p.force[i],
-                                      counts);
+      reference::stepParticle<double>(step, set, p.x[i], p.v[i], p.invMass[i], p.force[i], counts);
   return counts;
 }
 

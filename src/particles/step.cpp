@@ -28,14 +28,26 @@ std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles) {
       r.kind = core::ObstacleRow::kSphere, put(0, s->center), r.v[3] = s->radius;
     } else if (const auto* b = std::get_if<Aabb>(&shape)) {
       r.kind = core::ObstacleRow::kAabb, put(0, b->min), put(3, b->max);
+    } else if (const auto* o = std::get_if<Obb>(&shape)) {
+      r.kind = core::ObstacleRow::kObb, put(0, o->center), put(3, o->halfExtents);
+      for (int c = 0; c < 3; ++c) put(6 + 3 * c, o->axes.col(c));
     } else {
-      const Obb& o = std::get<Obb>(shape);
-      r.kind = core::ObstacleRow::kObb, put(0, o.center), put(3, o.halfExtents);
-      for (int c = 0; c < 3; ++c) put(6 + 3 * c, o.axes.col(c));
+      continue;  // meshes are not tested lane-wide (laneWide() is false)
     }
     rows.push_back(r);
   }
   return rows;
+}
+
+bool laneWide(const Obstacles& obstacles) {
+  if (obstacles.tree()) return false;
+  for (const ObstacleShape& shape : obstacles.shapes())
+    if (std::holds_alternative<MeshObstacle>(shape)) return false;
+  return true;
+}
+
+reference::ObstacleSetT<float> obstacleSet(const Obstacles& o) {
+  return reference::ObstacleSetT<float>(o.shapes(), o.tree(), o.bounded(), o.planes());
 }
 
 namespace {
@@ -45,7 +57,7 @@ namespace {
 constexpr std::size_t kPartition = 4096;
 
 core::ParticleCounts referenceRange(const core::View<F::Particle, float>& v, std::size_t begin,
-                                    std::size_t end, std::span<const ObstacleShape> shapes,
+                                    std::size_t end, const reference::ObstacleSetT<float>& shapes,
                                     const core::ParticleStepParams& params) {
   const reference::ParticleStep<float> p = reference::particleStep<float>(params);
   core::ParticleCounts counts;
@@ -78,11 +90,12 @@ core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obst
   (void)rows;  // the SIMD kernel's form of the obstacles
 
   const core::View<F::Particle, float> v = ParticleStreams::view(system);
+  const reference::ObstacleSetT<float> set = obstacleSet(obstacles);
   const std::size_t parts = (v.count + kPartition - 1) / kPartition;
   std::vector<core::ParticleCounts> counts(parts);
   const auto run = [&](std::size_t part) {
     const std::size_t begin = part * kPartition, end = std::min(v.count, begin + kPartition);
-    counts[part] = referenceRange(v, begin, end, obstacles.shapes(), params);
+    counts[part] = referenceRange(v, begin, end, set, params);
   };
   if (parts > 1) {
     const int t = threads > 0 ? threads : omp_get_max_threads();

@@ -17,7 +17,11 @@ struct ParticleStreams {
   static core::View<fields::Particle, float> view(ParticleSystem& system);
 };
 
-// The obstacles as the kernels read them.
+// Whether the kernels can test the obstacles lane-wide: few, and no meshes. Otherwise every path
+// runs the reference, which finds them through the trees.
+bool laneWide(const Obstacles& obstacles);
+
+// The obstacles as the kernels read them (meshes left out).
 std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles);
 
 // One substep of length dt for every particle of the system, with `damping` the substep's share

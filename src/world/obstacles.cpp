@@ -1,4 +1,5 @@
-// Obstacles (obstacles.hpp): the static solids, validated on entry, kept dense behind handles.
+// Obstacles (obstacles.hpp): the static shapes, validated on entry, kept dense behind handles,
+// and the tree over their bounds when there are many.
 #include <string>
 
 #include "simdphys/obstacles.hpp"
@@ -6,10 +7,42 @@
 
 namespace simdphys {
 
+namespace {
+
+void validateShape(const ObstacleShape& shape, const std::string& where) {
+  if (const auto* mesh = std::get_if<MeshObstacle>(&shape)) {
+    if (!*mesh) throw Error(where + ": the mesh is null");
+    if ((*mesh)->mesh().size() == 0) throw Error(where + ": the mesh has no triangles");
+    return;
+  }
+  std::visit(
+      [&](const auto& s) {
+        if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, MeshObstacle>) validate(s, where);
+      },
+      shape);
+}
+
+// The box of a bounded obstacle.
+Aabb bounds(const ObstacleShape& shape) {
+  if (const auto* s = std::get_if<Sphere>(&shape))
+    return {s->center.array() - s->radius, s->center.array() + s->radius};
+  if (const auto* b = std::get_if<Aabb>(&shape)) return *b;
+  if (const auto* o = std::get_if<Obb>(&shape)) {
+    const Vec3f reach = o->axes.cwiseAbs() * o->halfExtents;
+    return {o->center - reach, o->center + reach};
+  }
+  Aabb box{Vec3f::Constant(kMaxCoordinate), Vec3f::Constant(-kMaxCoordinate)};
+  for (const Vec3f& v : std::get<MeshObstacle>(shape)->mesh().vertices)
+    box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
+  return box;
+}
+
+}  // namespace
+
 Handle Obstacles::add(const ObstacleShape& shape) {
-  const std::string where = "Obstacles::add: obstacle " + std::to_string(shapes_.size());
-  std::visit([&](const auto& s) { validate(s, where); }, shape);
+  validateShape(shape, "Obstacles::add: obstacle " + std::to_string(shapes_.size()));
   shapes_.push_back(shape);
+  dirty_ = true;
   return handles_.add();
 }
 
@@ -17,10 +50,25 @@ void Obstacles::remove(Handle h) {
   const std::uint32_t i = handles_.remove(h, "Obstacles::remove", "obstacle");
   shapes_[i] = shapes_.back();
   shapes_.pop_back();
+  dirty_ = true;
 }
 
 const ObstacleShape& Obstacles::operator[](Handle h) const {
   return shapes_[handles_.index(h, "Obstacles::operator[]", "obstacle")];
+}
+
+void Obstacles::update() {
+  if (!dirty_) return;
+  bounded_.clear(), planes_.clear();
+  for (std::uint32_t i = 0; i < shapes_.size(); ++i)
+    (std::holds_alternative<Plane>(shapes_[i]) ? planes_ : bounded_).push_back(i);
+  treeBuilt_ = bounded_.size() > kFewObstacles;
+  if (treeBuilt_) {
+    BoxStream boxes;
+    for (std::uint32_t i : bounded_) boxes.push(bounds(shapes_[i]));
+    tree_.build(boxes);
+  }
+  dirty_ = false;
 }
 
 bool Obstacles::inside(const Vec3f& p) const {

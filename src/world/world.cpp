@@ -51,6 +51,7 @@ void World::step() {
   const auto start = Clock::now();
   profile_ = {};
   if (!systems_.empty()) {
+    obstacles_.update();
     const float dt = settings_.timeStep / float(settings_.substeps);
     const std::vector<core::ObstacleRow> rows = detail::obstacleRows(obstacles_);
     for (int sub = 0; sub < settings_.substeps; ++sub)

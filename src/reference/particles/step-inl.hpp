@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <variant>
+#include <vector>
 
 #include "core/particle_step.hpp"
 #include "simdphys/obstacles.hpp"
@@ -117,6 +118,23 @@ std::optional<Exit<T>> exitOf(const ObbT<T>& box, const Vec3<T>& p) {
   return Exit<T>{p + n * depth, n};
 }
 
+// A mesh is a surface: nothing is inside it.
+template <class T>
+std::optional<Exit<T>> exitOf(const MeshObstacle&, const Vec3<T>&) {
+  return std::nullopt;
+}
+
+// The float box around [lo, hi], rounded outwards, for the trees' queries.
+template <class T>
+Aabb outwardBox(const Vec3<T>& lo, const Vec3<T>& hi) {
+  Aabb box;
+  for (int k = 0; k < 3; ++k) {
+    box.min[k] = std::nextafter(float(lo[k]), -kMaxCoordinate);
+    box.max[k] = std::nextafter(float(hi[k]), kMaxCoordinate);
+  }
+  return box;
+}
+
 // The first surface the path x0 -> x1 enters: the fraction s of the path and the outward normal
 // there. Planes are entered from their front; solids through their surface (a path starting
 // inside enters nothing).
@@ -153,19 +171,65 @@ std::optional<Entry<T>> entryOf(const ObbT<T>& b, const Vec3<T>& x0, const Vec3<
   return fromHit(detail::rays::hitObb(b, x0, d, T(1)));
 }
 
+// A mesh's triangles are two-sided: the path meets the first it crosses (ties: the lower id),
+// found through the mesh's own tree.
+template <class T>
+std::optional<Entry<T>> entryOf(const MeshObstacle& mesh, const Vec3<T>& x0, const Vec3<T>& d) {
+  const Vec3<T> x1 = x0 + d;
+  std::optional<Entry<T>> first;
+  for (std::uint32_t id : mesh->overlapping(outwardBox<T>(x0.cwiseMin(x1), x0.cwiseMax(x1)))) {
+    const auto h = detail::rays::hitTriangle(cast<T>(mesh->mesh().triangle(id)),
+                                             WatertightRayT<T>(x0, d), T(1));
+    if (h && (!first || h->t < first->s)) first = Entry<T>{h->t, h->normal};
+  }
+  return first;
+}
+
+// The obstacles a particle is tested against: every one, in order; or, with a tree (more than
+// Obstacles::kFewObstacles bounded ones), the planes and the bounded obstacles whose bounds meet
+// the box in question, still in order.
+template <class T>
+class ObstacleSetT {
+ public:
+  explicit ObstacleSetT(std::span<const ObstacleShapeT<T>> shapes, const Bvh* tree = nullptr,
+                        std::span<const std::uint32_t> bounded = {},
+                        std::span<const std::uint32_t> planes = {})
+      : shapes_(shapes), tree_(tree), bounded_(bounded), planes_(planes) {}
+
+  // Calls f(shape) for each obstacle that may meet the box [lo, hi], in order.
+  template <class F>
+  void near(const Vec3<T>& lo, const Vec3<T>& hi, F&& f) const {
+    if (!tree_) {
+      for (const auto& s : shapes_) f(s);
+      return;
+    }
+    std::vector<std::uint32_t> found, ids(planes_.begin(), planes_.end());
+    const Vec3<T> limit = Vec3<T>::Constant(T(kMaxCoordinate));
+    tree_->query(outwardBox<T>(lo.cwiseMax(-limit), hi.cwiseMin(limit)), found);
+    for (std::uint32_t k : found) ids.push_back(bounded_[k]);
+    std::sort(ids.begin(), ids.end());
+    for (std::uint32_t i : ids) f(shapes_[i]);
+  }
+
+ private:
+  std::span<const ObstacleShapeT<T>> shapes_;
+  const Bvh* tree_;
+  std::span<const std::uint32_t> bounded_, planes_;
+};
+
 // Pushes p out of every obstacle it is strictly inside, in order, to `skin` outside, and takes
 // the part of v into that surface away; counts each push.
 template <class T>
-void pushOut(std::span<const ObstacleShapeT<T>> obstacles, T skin, Vec3<T>& p, Vec3<T>& v,
+void pushOut(const ObstacleSetT<T>& obstacles, T skin, Vec3<T>& p, Vec3<T>& v,
              ParticleCounts& counts) {
-  for (const auto& o : obstacles) {
+  obstacles.near(p, p, [&](const ObstacleShapeT<T>& o) {
     const auto e = std::visit([&](const auto& shape) { return exitOf(shape, p); }, o);
-    if (!e) continue;
+    if (!e) return;
     p = e->point + e->normal * skin;
     const T vn = v.dot(e->normal);
     if (vn < 0) v = v - e->normal * vn;
     ++counts.pushedOut;
-  }
+  });
 }
 
 // The velocity after meeting a surface of normal n: the normal part reversed and scaled by the
@@ -215,8 +279,8 @@ void rest(const ParticleStep<T>& p, const Vec3<T>& n, T tau, Vec3<T>& v, Vec3<T>
 // creep a particle along a surface friction holds it on. At most maxBounces contacts; past them
 // the particle stays at the last one.
 template <class T>
-void stepParticle(const ParticleStep<T>& p, std::span<const ObstacleShapeT<T>> obstacles,
-                  Vec3<T>& x, Vec3<T>& v, T invMass, const Vec3<T>& force, ParticleCounts& counts) {
+void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Vec3<T>& x,
+                  Vec3<T>& v, T invMass, const Vec3<T>& force, ParticleCounts& counts) {
   if (!(invMass > 0)) return;  // pinned
   Vec3<T> a = p.gravity;
   if (p.forces) a = a + (force - v * p.drag) * invMass;
@@ -227,11 +291,12 @@ void stepParticle(const ParticleStep<T>& p, std::span<const ObstacleShapeT<T>> o
   integrate(p.integrator, x1, v1, tau, constant);
   for (int bounce = 0;; ++bounce) {
     const Vec3<T> d = x1 - x0;
+    if (d.squaredNorm() == 0) break;  // not moving: meets nothing
     std::optional<Entry<T>> first;
-    for (const auto& o : obstacles) {
+    obstacles.near(x0.cwiseMin(x1), x0.cwiseMax(x1), [&](const ObstacleShapeT<T>& o) {
       const auto e = std::visit([&](const auto& shape) { return entryOf(shape, x0, d); }, o);
       if (e && (!first || e->s < first->s)) first = e;
-    }
+    });
     if (!first) break;
     ++counts.contacts;
     const Vec3<T> n = first->normal;
