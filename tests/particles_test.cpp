@@ -141,6 +141,26 @@ TEST_P(Particles, FreeFlightFollowsTheProjectile) {
   EXPECT_EQ(world.profile().particles.elements, 1u);
 }
 
+TEST_P(Particles, ForcesActThroughTheInverseMassAndDragReachesTerminalVelocity) {
+  World world({.timeStep = 1.0f / 64});
+  const Handle s = world.addParticles({.gravity = Vec3f::Zero()});
+  const Handle heavy = world.particles(s).add({0, 0, 0}, Vec3f::Zero(), 0.25f);  // 4 kg
+  world.particles(s).setForce(heavy, {8, 0, 0});                                 // 2 m/s^2
+  for (int i = 0; i < 64; ++i) world.step();
+  // Velocity Verlet is exact for a constant force: x = a t^2 / 2 = 1 m, v = 2 m/s, to the
+  // rounding of 64 float steps (ulp 1e-7 at these magnitudes).
+  EXPECT_NEAR(world.particles(s).position(heavy).x(), 1.0f, 1e-5);
+  EXPECT_NEAR(world.particles(s).velocity(heavy).x(), 2.0f, 1e-5);
+
+  World falling({.timeStep = 1.0f / 64});
+  const Handle t = falling.addParticles({.drag = 0.5f});
+  const Handle p = falling.particles(t).add({0, 0, 0}, Vec3f::Zero(), 0.5f);  // 2 kg
+  for (int i = 0; i < 64 * 30; ++i) falling.step();
+  // m g = drag v: v = 2 * 9.82 / 0.5 = 39.28 m/s, approached as exp(-t drag / m) (time constant
+  // 4 s; after 30 s within e^-7.5 = 6e-4 of it), the drag taken at the step's start velocity.
+  EXPECT_NEAR(falling.particles(t).velocity(p).y(), -39.28f, 39.28f * 1e-3);
+}
+
 // Apex heights of a particle dropped from 10 m onto the plane y = 0.
 std::vector<double> apexes(float restitution) {
   World world({.timeStep = 1.0f / 240});
