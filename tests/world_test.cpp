@@ -78,13 +78,16 @@ TEST(World, ObstaclesAndSystemsHaveHandlesToo) {
   world.obstacles().remove(a);
   EXPECT_EQ(world.obstacles().size(), 1u);
   EXPECT_TRUE(std::holds_alternative<Aabb>(world.obstacles()[b]));
-  expectError([&] { world.obstacles().remove(a); }, "Obstacles::remove: obstacle handle");
+  expectError(
+      [&] { world.obstacles().remove(a); },
+      "Obstacles::remove: the handle (slot 0, generation 1) is stale: its obstacle was removed");
   const Handle s = world.addParticles(), t = world.addParticles();
   world.particles(t).add({0, 0, 0});
   world.removeParticles(s);
   EXPECT_EQ(world.particleSystemCount(), 1u);
   EXPECT_EQ(world.particles(t).size(), 1u);
-  expectError([&] { world.particles(s); }, "World::particles: particle system handle");
+  expectError([&] { world.particles(s); },
+              "World::particles: the handle (slot 0, generation 1) is stale: its particle system");
   expectError([&] { world.particles(Handle{7, 1}); }, "out of range");
 }
 
@@ -123,7 +126,8 @@ TEST(World, BadInputIsAnErrorThatNamesItAndChangesNothing) {
   EXPECT_TRUE(world.obstacles().empty());
   ps.remove(p);
   expectError([&] { ps.remove(p); },
-              "ParticleSystem::remove: particle handle (slot 0, generation 1) is stale");
+              "ParticleSystem::remove: the handle (slot 0, generation 1) is stale: its particle "
+              "was removed");
   expectError([&] { ps.index(Handle{}); }, "out of range");
 }
 

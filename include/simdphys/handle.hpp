@@ -29,6 +29,7 @@ inline std::string toString(const Handle& h) {
 class HandleTable {
  public:
   std::size_t size() const { return slotOf_.size(); }
+  std::size_t slots() const { return slots_.size(); }
   bool contains(Handle h) const {
     return h.slot < slots_.size() && slots_[h.slot].generation == h.generation && h.generation != 0;
   }

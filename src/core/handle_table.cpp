@@ -8,13 +8,13 @@ namespace simdphys {
 
 std::uint32_t HandleTable::index(Handle h, const char* where, const char* what) const {
   if (h.slot >= slots_.size())
-    throw Error(std::string(where) + ": " + what + " handle (" + toString(h) +
-                ") is out of range (" + std::to_string(slots_.size()) + " slots)");
+    throw Error(std::string(where) + ": " + what + " " + std::to_string(h.slot) +
+                " is out of range (" + std::to_string(slots_.size()) + " slots; handle " +
+                toString(h) + ")");
   const Slot& s = slots_[h.slot];
   if (s.generation != h.generation || h.generation == 0)
-    throw Error(std::string(where) + ": " + what + " handle (" + toString(h) + ") is stale: its " +
-                what + " was removed (the slot is at generation " + std::to_string(s.generation) +
-                ")");
+    throw Error(std::string(where) + ": the handle (" + toString(h) + ") is stale: its " + what +
+                " was removed (the slot is at generation " + std::to_string(s.generation) + ")");
   return s.index;
 }
 

@@ -55,15 +55,7 @@ Aabb reach(const Sphere& sphere) {
 }  // namespace
 
 std::uint32_t Scene::require(Handle h, const char* where) const {
-  if (h.slot >= slots_.size())
-    throw Error(std::string(where) + ": model " + std::to_string(h.slot) + " is out of range (" +
-                std::to_string(slots_.size()) + " slots; handle " + toString(h) + ")");
-  const Slot& s = slots_[h.slot];
-  if (s.generation != h.generation)
-    throw Error(std::string(where) + ": the handle (" + toString(h) +
-                ") is stale: its model was removed (the slot is at generation " +
-                std::to_string(s.generation) + ")");
-  return s.index;
+  return handles_.index(h, where, "model");
 }
 
 void Scene::requireUpToDate(const char* where) const {
@@ -72,12 +64,10 @@ void Scene::requireUpToDate(const char* where) const {
 
 std::uint32_t Scene::parentIndex(std::uint32_t i) const {
   const Handle p = models_[i].parent;
-  return p == kNoParent ? kNoModel : slots_[p.slot].index;
+  return p == kNoParent ? kNoModel : handles_.index(p, "Scene", "model");
 }
 
-bool Scene::contains(Handle h) const {
-  return h.slot < slots_.size() && slots_[h.slot].generation == h.generation;
-}
+bool Scene::contains(Handle h) const { return handles_.contains(h); }
 
 std::uint32_t Scene::index(Handle h) const { return require(h, "Scene::index"); }
 
@@ -85,7 +75,7 @@ Handle Scene::handle(std::uint32_t i) const {
   if (i >= models_.size())
     throw Error("Scene::handle: " + modelName(i) + " is out of range (" +
                 std::to_string(models_.size()) + " models)");
-  return {slotOf_[i], slots_[slotOf_[i]].generation};
+  return handles_.handle(i);
 }
 
 Handle Scene::add(const Model& model) {
@@ -94,24 +84,14 @@ Handle Scene::add(const Model& model) {
   validateTransform(model.transform, where);
   validateShape(model.shape, where);
   if (model.parent != kNoParent) {
-    if (model.parent.slot >= slots_.size())
+    if (model.parent.slot >= handles_.slots())
       throw Error(where + ": parent " + std::to_string(model.parent.slot) + " is out of range (" +
                   std::to_string(i) + " models before it)");
     require(model.parent, (where + " (parent)").c_str());
   }
-  std::uint32_t slot;
-  if (freeSlots_.empty()) {
-    slot = std::uint32_t(slots_.size());
-    slots_.push_back({i, 1});
-  } else {
-    slot = freeSlots_.back();
-    freeSlots_.pop_back();
-    slots_[slot].index = i;
-  }
   models_.push_back(model);
-  slotOf_.push_back(slot);
   dirty_ = true;
-  return {slot, slots_[slot].generation};
+  return handles_.add();
 }
 
 void Scene::remove(Handle h) {
@@ -120,16 +100,9 @@ void Scene::remove(Handle h) {
     if (models_[m].parent == h)
       throw Error("Scene::remove: " + modelName(i) + " is the parent of " + modelName(m) +
                   "; remove or re-parent its children first");
-  const std::uint32_t last = std::uint32_t(models_.size() - 1);
-  models_[i] = std::move(models_[last]);
-  slotOf_[i] = slotOf_[last];
-  slots_[slotOf_[i]].index = i;
+  handles_.remove(h, "Scene::remove", "model");
+  models_[i] = std::move(models_.back());
   models_.pop_back();
-  slotOf_.pop_back();
-  Slot& freed = slots_[h.slot];
-  freed.index = kNoModel;
-  if (++freed.generation == 0) freed.generation = 1;  // 0 is never live
-  freeSlots_.push_back(h.slot);
   indexed_ = kRebuild;
   dirty_ = true;
 }

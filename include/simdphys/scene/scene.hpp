@@ -106,12 +106,7 @@ class Scene {
   std::vector<std::uint32_t> select(const Shape& shape, SceneIndex via) const;
 
   // A handle's slot: the index of its model and the generation of the handle that names it.
-  struct Slot {
-    std::uint32_t index, generation;
-  };
-  std::vector<Slot> slots_;
-  std::vector<std::uint32_t> slotOf_;     // per model index
-  std::vector<std::uint32_t> freeSlots_;  // slots whose model was removed, for reuse
+  HandleTable handles_;
 
   OctreeOptions octreeOptions_;
   std::vector<Model> models_;
