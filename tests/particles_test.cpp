@@ -300,6 +300,13 @@ TEST_P(Particles, SlowImpactsDoNotBounceAndPinnedParticlesDoNotMove) {
   EXPECT_LE(world.particles(s).velocity(slow).y(), 0.0f);
   EXPECT_GE(world.particles(s).position(slow).y(), 0.0f);
   EXPECT_EQ(world.particles(s).position(pinned), Vec3f(5, 5, 5));
+  // Landing slowly from 3 cm (0.77 m/s) it comes to rest on the surface, not where a step
+  // began: within the two skins a resting contact allows.
+  const Handle landing = world.particles(s).add({1, 0.03f, 0});
+  for (int i = 0; i < 60; ++i) world.step();
+  EXPECT_GE(world.particles(s).position(landing).y(), 0.0f);
+  EXPECT_LE(world.particles(s).position(landing).y(), 2e-3f);
+  EXPECT_LE(world.particles(s).position(slow).y(), 2e-3f);
 }
 
 TEST_P(Particles, SubstepsAreShorterSteps) {

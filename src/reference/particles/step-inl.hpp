@@ -275,9 +275,10 @@ void rest(const ParticleStep<T>& p, const Vec3<T>& n, T tau, Vec3<T>& v, Vec3<T>
 // One particle's step: forces, damping, integration, then the path x -> x' against the obstacles.
 // The first surface the path enters ends it there: a fast impact bounces (respond) and the path
 // goes on from the contact for the time left; a slow one (at most the restitution threshold) is a
-// resting contact, and the path is run again from its start under rest(), so that gravity cannot
-// creep a particle along a surface friction holds it on. At most maxBounces contacts; past them
-// the particle stays at the last one.
+// resting contact, under rest() for the time left, and if the particle was already touching the
+// surface, for the whole step from its start, so that gravity cannot creep a particle along a
+// surface friction holds it on. At most maxBounces contacts; past them the particle stays at the
+// last one.
 template <class T>
 void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Vec3<T>& x,
                   Vec3<T>& v, T invMass, const Vec3<T>& force, ParticleCounts& counts) {
@@ -309,6 +310,15 @@ void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Ve
       break;
     }
     if (-vh.dot(n) <= p.threshold) {
+      // Resting. A particle that was already touching (within two skins along n) re-runs its
+      // path from the start; one that arrived from further stops at the contact first, so that
+      // it does not hover where the step began.
+      if (first->s * -d.dot(n) > 2 * p.skin) {
+        v0 = vh;
+        x0 = x0 + d * first->s + n * p.skin;
+        pushOut(obstacles, p.skin, x0, v0, counts);
+        tau = (T(1) - first->s) * tau;
+      }
       rest(p, n, tau, v0, a);
     } else {
       v0 = respond(p, vh, n);
