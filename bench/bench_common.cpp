@@ -48,30 +48,31 @@ std::string name(const std::string& task, const std::string& method, const std::
 // elsewhere are given in; the JSON keeps the CPU time beside it (cpu_time), and report.py shows
 // both, so contention on a shared machine shows as a gap between them.
 void registerRun(const std::string& runName, const std::string& label, const std::string& path,
-                 const Body& body) {
-  benchmark::RegisterBenchmark(runName.c_str(),
-                               [body, label, path](benchmark::State& state) {
-                                 std::optional<ScopedPath> forced;
-                                 if (!path.empty()) forced.emplace(path);
-                                 state.SetLabel(label);
-                                 body(state);
-                               })
-      ->Unit(benchmark::kMillisecond)
-      ->UseRealTime();
+                 const Body& body, std::int64_t iterations = 0) {
+  auto* run = benchmark::RegisterBenchmark(runName.c_str(),
+                                           [body, label, path](benchmark::State& state) {
+                                             std::optional<ScopedPath> forced;
+                                             if (!path.empty()) forced.emplace(path);
+                                             state.SetLabel(label);
+                                             body(state);
+                                           })
+                  ->Unit(benchmark::kMillisecond)
+                  ->UseRealTime();
+  if (iterations > 0) run->Iterations(iterations);
 }
 }  // namespace
 
 void registerPerPath(const std::string& task, const std::string& method, std::size_t n,
-                     const Body& body, bool withReference) {
+                     const Body& body, bool withReference, std::int64_t iterations) {
   for (const std::string& path : availablePaths())
     if (path != "reference" || withReference)
-      registerRun(name(task, method, path, n), path, path, body);
+      registerRun(name(task, method, path, n), path, path, body, iterations);
 }
 
 void registerBestPath(const std::string& task, const std::string& method, std::size_t n,
-                      const Body& body) {
+                      const Body& body, std::int64_t iterations) {
   const std::string best = availablePaths().front();
-  registerRun(name(task, method, best, n), best, best, body);
+  registerRun(name(task, method, best, n), best, best, body, iterations);
 }
 
 void registerOnce(const std::string& task, const std::string& method, const std::string& label,

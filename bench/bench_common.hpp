@@ -29,12 +29,13 @@ const SphereStream& sphereField();
 using Body = std::function<void(benchmark::State&)>;
 
 // Registers `body` under task/method/<path>/n, running with the path forced, for every path
-// this machine has (the reference path too when `withReference`).
+// this machine has (the reference path too when `withReference`). `iterations` > 0 fixes the
+// iteration count (a simulation's frames), else Google Benchmark chooses it.
 void registerPerPath(const std::string& task, const std::string& method, std::size_t n,
-                     const Body& body, bool withReference = true);
+                     const Body& body, bool withReference = true, std::int64_t iterations = 0);
 // Registers `body` on the best SIMD path only: for comparing algorithms rather than paths.
 void registerBestPath(const std::string& task, const std::string& method, std::size_t n,
-                      const Body& body);
+                      const Body& body, std::int64_t iterations = 0);
 // Registers `body` once, under task/method/label/n: label is "peer" for another engine's run, or
 // "scalar" for code that has one path only (the octree's build).
 void registerOnce(const std::string& task, const std::string& method, const std::string& label,

@@ -16,6 +16,7 @@ void registerGeometry3dBenchmarks();
 void registerSceneBenchmarks();
 void registerOverlap3dBenchmarks();
 void registerGeometry2dBenchmarks();
+void registerParticleBenchmarks();
 }  // namespace simdphys::bench
 
 namespace {
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
   bench::registerSceneBenchmarks();
   bench::registerOverlap3dBenchmarks();
   bench::registerGeometry2dBenchmarks();
+  bench::registerParticleBenchmarks();
 #ifdef SIMDPHYS_HAVE_BULLET
   bench::registerBulletBenchmarks();
 #endif

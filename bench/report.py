@@ -10,6 +10,7 @@ writes the Markdown report (machine, workloads, targets), with --img one PNG per
 import argparse
 import json
 import os
+import re
 import sys
 from collections import namedtuple
 
@@ -32,6 +33,9 @@ TASKS = {
     "closest_boxes": ("closest points/s", "batch"),
     "pairs2d": ("pairs/s", "banded_sweep"), "narrow2d": ("candidate pairs/s", None),
     "scene_build": ("boxes/s", None),
+    "particles": ("particle steps/s", "w4"), "world_step": ("steps/s", None),
+    "integrate_projectile": ("particle steps/s", None),
+    "integrate_oscillator": ("particle steps/s", None),
 }
 BATCH2D = ["batch2d_circle_circles", "batch2d_rect_rects", "batch2d_orect_orects",
            "batch2d_point_circles", "batch2d_point_rects", "batch2d_point_orects"]
@@ -140,6 +144,32 @@ SECTIONS = [
      "rectangles; throughput is element tests per second. batch is the library's call on the "
      "path, autovec the same kernel as a plain loop compiled for it; every path must find the "
      "reference path's hit total."),
+    ("W4 particles: bouncing off a ground box and a ramp", ["particles", "world_step"],
+     "particles",
+     "N particles dropped from rest onto a ground box and a ramp rotated 0.35 rad about z (W4: "
+     "restitution 0.7, damping 0.95 a step, friction 0, the default integrator, velocity "
+     "Verlet), 300 frames at 60 Hz a run, one iteration a frame: ms/iter is the time of a "
+     "frame, throughput particle steps per second, and beside it the bytes a step must move "
+     "(position, velocity and inverse mass read, position and velocity written: 52 B a "
+     "particle). w4 steps the world on the path; autovec with the step's plain loop over the "
+     "streams, compiled for the path. Check, at the end of the 300 frames: particles inside an "
+     "obstacle (must be 0, else the run fails), the mean height, the distance from the same "
+     "world stepped by the double-precision reference (largest, root mean square, and the "
+     "fraction of particles more than 1e-3 m from it), and the bytes/s as a share of the 512 "
+     "MiB streaming read of this run. world_step: one step of an empty world, and of a world "
+     "holding W4's obstacles and one particle (resting after the first second)."),
+    ("Integrators: error against cost on closed forms",
+     ["integrate_projectile", "integrate_oscillator"], "integrators",
+     "The four integrators at time steps 1/30 to 1/480 s. projectile: 10,000 particles thrown "
+     "from random points at random velocities, stepped for 1 s by a World on the best path (no "
+     "obstacles, no damping); error: the largest distance from x0 + v0 t + g t^2 / 2. "
+     "oscillator: 1,000 particles on x'' = -(2 pi)^2 x, 10 periods, through the scalar "
+     "reference's integrate() in float with the spring evaluated each step (a World holds a "
+     "force for a whole step, so it cannot pose this case); error: the largest distance from "
+     "x0 cos wt + v0 / w sin wt. Position Verlet starts from the velocity half a step back, "
+     "the mean over the step before the start that its state holds. A step costs the same at "
+     "every dt, so the plot sets the error against the cost of a simulated second (ns a "
+     "particle step / dt)."),
     ("Bandwidth: streaming read", ["bandwidth"], "bandwidth",
      "A plain reduction over a buffer at the W6 working-set sizes and at 512 MiB (main "
      "memory): the ceiling the memory-bound kernels are read against."),
@@ -167,8 +197,10 @@ def load(path):
     scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
     runs = {}
     for e in entries:
-        # Google Benchmark appends /real_time to the names of runs timed in wall-clock time.
-        parts = e.get("run_name", e["name"]).removesuffix("/real_time").split("/")
+        # Google Benchmark appends /iterations:<k> to runs of a fixed iteration count and
+        # /real_time to runs timed in wall-clock time.
+        name = re.sub(r"/iterations:\d+$", "", e.get("run_name", e["name"]).removesuffix("/real_time"))
+        parts = name.split("/")
         if len(parts) < 4 or not parts[-1].isdigit():
             continue
         # The task may hold a slash itself (rays/coherent): n, path and method are the last three.
@@ -269,13 +301,17 @@ def size(r):
     return f"{r.n >> 20} MiB" if r.task == "bandwidth" else f"{r.n:,}"
 
 
-def check(r):
+def check(r, runs):
     """The correctness column: exact/checksum, the double-reference difference, or the error."""
     c = r.counters
     if r.error:
         return "FAILED: " + r.error
     if r.task.startswith("rays/") and "differ" in c:
         return rays_check(c)
+    if r.task == "particles" and "inside" in c:
+        return particles_check(r, runs)
+    if "ns_per_step" in c and r.task == "world_step":
+        return f"{c['ns_per_step']:.0f} ns a step"
     notes = []
     if "exact" in c:
         notes.append("exact" if c["exact"] == 1 else f"result {c.get('result', 0):.0f} inexact")
@@ -310,6 +346,103 @@ def rays_check(c):
     return ", ".join(notes)
 
 
+def particles_check(r, runs):
+    """The W4 checks: particles inside an obstacle (and how deep), the mean final height, the
+    distance from the double reference, and bytes/s as a share of this run's streaming read from
+    memory."""
+    c = r.counters
+    bw = runs.get(("bandwidth", "read", "scalar", 512 << 20))
+    share = (f", {100 * r.bps / bw.bps:.0f}% of the 512 MiB streaming read"
+             if bw and bw.bps and r.bps else "")
+    inside = (f"{c['inside']:.0f} inside (must be 0; deepest {c.get('inside_depth', 0):.2g} m)"
+              if c["inside"] else "0 inside")
+    return (f"{inside}, mean height {c['mean_height']:.3f} m, vs double: max "
+            f"{c['error_max']:.2g} m, rms {c['error_rms']:.2g} m, "
+            f"{100 * c['apart_fraction']:.2f}% > 1e-3 m" + share)
+
+
+INTEGRATORS = ["explicit Euler", "semi-implicit Euler", "velocity Verlet", "position Verlet"]
+
+
+def integrator_rows(runs):
+    """The integrator runs by (integrator, steps a second): {case: run}, case 'projectile' or
+    'oscillator'."""
+    rows = {}
+    for r in runs.values():
+        if r.task.startswith("integrate_") and r.ms and "dt" in r.counters:
+            key = (int(r.counters["integrator"]), round(1 / r.counters["dt"]))
+            rows.setdefault(key, {})[r.task.removeprefix("integrate_")] = r
+    return dict(sorted(rows.items()))
+
+
+def integrator_table(runs, tasks, markdown):
+    """Integrator, dt, and per case the ns a particle step and the error at the end."""
+    head = ["integrator", "dt", "projectile ns/step", "projectile error (m)",
+            "oscillator ns/step", "oscillator error (m)"]
+    cell = lambda r, k, f: f(r.counters[k]) if r else "-"  # noqa: E731
+    body = []
+    for (i, hz), cases in integrator_rows(runs).items():
+        row = [INTEGRATORS[i] if i < len(INTEGRATORS) else str(i), f"1/{hz} s"]
+        for case in ("projectile", "oscillator"):
+            r = cases.get(case)
+            row += [cell(r, "ns_per_step", lambda v: f"{v:.2f}"),
+                    cell(r, "error", lambda v: f"{v:.2e}")]
+        body.append(row)
+    if markdown:
+        return "\n".join(["| " + " | ".join(head) + " |", "|---|---|--:|--:|--:|--:|"]
+                         + ["| " + " | ".join(row) + " |" for row in body])
+    width = [max(len(row[i]) for row in [head] + body) for i in range(len(head))]
+    return "\n".join("  ".join(c.ljust(w) if i < 2 else c.rjust(w)
+                               for i, (c, w) in enumerate(zip(row, width))).rstrip()
+                     for row in [head] + body)
+
+
+def integrator_plot(runs, tasks, title, filename):
+    """Error against the cost of a simulated second (log-log), a line per integrator through
+    its time steps, a panel per case."""
+    rows = integrator_rows(runs)
+    cases = [c for c in ("projectile", "oscillator") if any(c in v for v in rows.values())]
+    if not cases:
+        return False
+    fig, axes = plt.subplots(1, len(cases), figsize=(6 * len(cases), 4.5), squeeze=False)
+    for ax, case in zip(axes[0], cases):
+        for i, name in enumerate(INTEGRATORS):
+            pts = sorted((hz, r) for (k, hz), v in rows.items() if k == i
+                         for c, r in v.items() if c == case)
+            if not pts:
+                continue
+            # ns a particle step / dt: the cost of a simulated second; errors of 0 (exact to
+            # the last bit) are drawn at 1e-12 to stay on the log scale.
+            xs = [r.counters["ns_per_step"] * hz for hz, r in pts]
+            ys = [max(r.counters["error"], 1e-12) for _, r in pts]
+            ax.plot(xs, ys, marker="o", label=name)
+            for (hz, _), x, y in zip(pts, xs, ys):
+                ax.annotate(f"1/{hz}", (x, y), fontsize=7, xytext=(3, 3),
+                            textcoords="offset points")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(case, fontsize=10)
+        ax.set_xlabel("ns a particle per simulated second (lower is cheaper)", fontsize=9)
+        ax.set_ylabel("largest position error at the end (m)", fontsize=9)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8)
+    fig.suptitle(title, x=0.02, ha="left", fontsize=11)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    fig.savefig(filename, dpi=100)
+    plt.close(fig)
+    return True
+
+
+# Sections drawn by their own table and plot (by image name) rather than the generic ones.
+CUSTOM = {"integrators": (integrator_table, integrator_plot)}
+
+
+def section_table(image, runs, tasks, markdown):
+    """The section's table: its own, or the generic one."""
+    return CUSTOM[image][0](runs, tasks, markdown) if image in CUSTOM else table(runs, tasks,
+                                                                                 markdown)
+
+
 def order(runs, tasks):
     """Runs of the given tasks: by task, n, simdphys methods before peers, method name (the
     JSON's order is random with interleaved repetitions), then path in the machine's order."""
@@ -333,7 +466,7 @@ def table(runs, tasks, markdown):
     body = [[r.task, r.method, r.path, size(r), fixed(r.ms), fixed(r.cpu_ms),
              eng(r.rate, unit_of(r.task))
              + (f" ({eng(r.bps, 'B/s')})" if r.bps and unit_of(r.task) != "B/s" else "")]
-            + [times(x[k]) for k, _ in cols] + [check(r)] for r, x in zip(rows, ratios)]
+            + [times(x[k]) for k, _ in cols] + [check(r, runs)] for r, x in zip(rows, ratios)]
     head.append("check")
     if markdown:
         lines = ["| " + " | ".join(head) + " |",
@@ -401,7 +534,7 @@ def targets(runs, context):
     goal, verdict)."""
     path, note = target_path(runs, context)
     rows = [ratio_row(runs, path, *spec) for spec in target_specs()]
-    return note, rows + watertight(runs, path)
+    return note, rows + watertight(runs, path) + particle_rows(runs, path)
 
 
 def target_path(runs, context):
@@ -442,7 +575,36 @@ def target_specs():
                                   ("obb_obbs", "sat", 100000, 6)):
         specs.append((f"{task} N={n:,}: {method} vs reference", (task, method, "*", n),
                       (task, method, "reference", n), goal))
-    return specs + rays_specs()
+    return specs + rays_specs() + particle_specs()
+
+
+def particle_specs():
+    """Issue 12's W4 targets read as ratios (see target_specs)."""
+    w4 = lambda n, method="w4", path="*": ("particles", method, path, n)  # noqa: E731
+    return [
+        ("particles N=1,000,000: w4 bytes/s vs streaming read at 512 MiB", w4(1000000),
+         ("bandwidth", "read", "scalar", 512 << 20), 0.5),
+        ("particles N=100,000: w4 vs reference", w4(100000), w4(100000, path="reference"), 10),
+        ("particles N=100,000: w4 vs autovec (the plain loop on the same path)", w4(100000),
+         w4(100000, "autovec"), 2)]
+
+
+def particle_rows(runs, path):
+    """Issue 12's other targets: no particle inside an obstacle at the end of any W4 run (every
+    path and N), and the step of an empty world under a microsecond on the path."""
+    w4 = [r for r in runs.values() if r.task == "particles"]
+    counted = [r for r in w4 if "inside" in r.counters]
+    worst = max((r.counters["inside"] for r in counted), default=None)
+    failed = any(r.error for r in w4)
+    inside = ("particles inside an obstacle after W4's 300 frames (every path, method and N)",
+              "-" if worst is None else f"{worst:.0f}" + (", runs failed" if failed else ""),
+              "0", "no data" if worst is None else "met" if worst == 0 and not failed
+              else "missed")
+    empty = runs.get(("world_step", "empty", path, 0))
+    ns = empty.counters.get("ns_per_step") if empty and empty.ms else None
+    step = ("world_step: a step of an empty world", "-" if ns is None else f"{ns:.0f} ns",
+            "< 1000 ns", "no data" if ns is None else "met" if ns < 1000 else "missed")
+    return [inside, step]
 
 
 def rays_specs():
@@ -552,8 +714,8 @@ def markdown(runs, context, source, images, mdpath):
     if busy:
         out.append(f"- {busy} of {len(runs)} runs had a wall time more than 30% above their CPU "
                    "time, a sign that other work shared the cores during the run.")
-    for title, tasks, _, sentence in sections(runs):
-        out += ["", f"## {title}", "", sentence, "", table(runs, tasks, True)]
+    for title, tasks, image, sentence in sections(runs):
+        out += ["", f"## {title}", "", sentence, "", section_table(image, runs, tasks, True)]
         if title in images:
             rel = os.path.relpath(images[title], os.path.dirname(os.path.abspath(mdpath)))
             out += ["", f"![{title}]({rel})"]
@@ -561,7 +723,8 @@ def markdown(runs, context, source, images, mdpath):
     out += ["", "## Targets", "", note + " Ratios are times (or bytes/s for bandwidth) of the "
             "baseline over this path; a target is met when the ratio reaches the goal. Where "
             "two methods are named, the faster is taken and shown beside the ratio. The "
-            "watertightness rows count rays instead, and are met at 0.", "",
+            "watertightness rows count rays instead, and are met at 0; the particle rows count "
+            "particles, or time a step.", "",
             "| target | measured | goal | verdict |", "|---|--:|--:|---|"]
     out += ["| " + " | ".join(row) + " |" for row in rows]
     return "\n".join(out) + "\n"
@@ -579,14 +742,15 @@ def main():
     if not runs:
         sys.exit(f"report.py: no task/method/path/n benchmarks in {args.results}")
     if not args.quiet:
-        for title, tasks, _, _ in sections(runs):
-            print(f"== {title}\n{table(runs, tasks, False)}\n")
+        for title, tasks, image, _ in sections(runs):
+            print(f"== {title}\n{section_table(image, runs, tasks, False)}\n")
     images = {}
     if args.img:
         os.makedirs(args.img, exist_ok=True)
         for title, tasks, image, _ in sections(runs):
             png = os.path.join(args.img, f"{image}.png")
-            if image and plot(runs, tasks, title, png):
+            draw = CUSTOM[image][1] if image in CUSTOM else plot
+            if image and draw(runs, tasks, title, png):
                 images[title] = png
     if args.md:
         os.makedirs(os.path.dirname(os.path.abspath(args.md)), exist_ok=True)

@@ -8,7 +8,7 @@
 
 #include "simdphys/broadphase.hpp"
 #include "simdphys/geometry2d/broadphase.hpp"
-#include "src/core/on_path.hpp"
+#include "testing/plain_loops.hpp"
 
 namespace simdphys::test {
 
@@ -19,10 +19,7 @@ class PlainLoop : public Finder {
  public:
   template <class Stream, class Method>
   void find(const Stream& stream, std::vector<Pair>& pairs, Method method) {
-    struct Scoped {
-      Scoped() { detail::setPlainLoops(true); }
-      ~Scoped() { detail::setPlainLoops(false); }
-    } plain;
+    const ScopedPlainLoops plain;
     Finder::find(stream, pairs, method);
   }
 };

@@ -1,0 +1,34 @@
+#include "particles.hpp"
+
+#include "simdphys/math.hpp"
+#include "workloads.hpp"
+
+namespace simdphys::workloads {
+
+Obb particleGround() { return {{0, -1, 0}, {20, 1, 20}}; }
+
+Obb particleRamp() { return {{0, 2, 0}, {6, 0.25f, 6}, rotationZ(0.35).cast<float>()}; }
+
+ParticleWorkload makeParticleWorkload(std::size_t n) {
+  ParticleSettings settings;
+  settings.gravity = {0, -9.82f, 0};
+  settings.restitution = 0.7f;
+  settings.damping = 0.95f;
+  settings.friction = 0;
+  ParticleWorkload w{World(WorldSettings{.timeStep = 1.0f / 60.0f}), {}};
+  w.world.obstacles().add(particleGround());
+  w.world.obstacles().add(particleRamp());
+  w.particles = w.world.addParticles(settings);
+  ParticleSystem& system = w.world.particles(w.particles);
+  system.reserve(n);
+  Random r(4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float x = r.uniform(-10, 10);
+    const float y = r.uniform(5, 25);
+    const float z = r.uniform(-10, 10);
+    system.add({x, y, z});
+  }
+  return w;
+}
+
+}  // namespace simdphys::workloads
