@@ -41,7 +41,7 @@ const std::vector<Vec3d>& doubleFinal(std::size_t n) {
   static std::map<std::size_t, std::vector<Vec3d>> cache;
   std::vector<Vec3d>& x = cache[n];
   if (x.empty()) {
-    const workloads::ParticleWorkload& w = initialWorld(n);
+    workloads::ParticleWorkload w = initialWorld(n);  // stepDouble updates the world's obstacles
     const ParticleSystem& s = w.world.particles(w.particles);
     test::ParticlesD p = test::toDouble(s);
     for (int f = 0; f < workloads::kParticleFrames; ++f) test::stepDouble(p, s, w.world);
