@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <variant>
 
 #include "bench_common.hpp"
@@ -90,13 +91,10 @@ void particlesRun(benchmark::State& state, std::size_t n, bool plainLoops) {
   workloads::ParticleWorkload w = initialWorld(n);
   const ParticleSystem& s = w.world.particles(w.particles);
   std::uint64_t contacts = 0, pushedOut = 0, limited = 0;
+  std::optional<test::ScopedPlainLoops> plain;
+  if (plainLoops) plain.emplace();
   for (auto _ : state) {
-    if (plainLoops) {
-      const test::ScopedPlainLoops plain;
-      w.world.step();
-    } else {
-      w.world.step();
-    }
+    w.world.step();
     const StepProfile& p = w.world.profile();
     contacts += p.contacts, pushedOut += p.pushedOut, limited += p.bounceLimited;
   }

@@ -356,6 +356,8 @@ def particles_check(r, runs):
              if bw and bw.bps and r.bps else "")
     inside = (f"{c['inside']:.0f} inside (must be 0; deepest {c.get('inside_depth', 0):.2g} m)"
               if c["inside"] else "0 inside")
+    if c.get("pushed_out"):  # found inside at a step's start: a frame before ended inside
+        inside += f" ({c['pushed_out']:.0f} pushed out on the way)"
     return (f"{inside}, mean height {c['mean_height']:.3f} m, vs double: max "
             f"{c['error_max']:.2g} m, rms {c['error_rms']:.2g} m, "
             f"{100 * c['apart_fraction']:.2f}% > 1e-3 m" + share)
