@@ -199,8 +199,8 @@ def load(path):
     for e in entries:
         # Google Benchmark appends /iterations:<k> to runs of a fixed iteration count and
         # /real_time to runs timed in wall-clock time.
-        name = re.sub(r"/iterations:\d+$", "", e.get("run_name", e["name"]).removesuffix("/real_time"))
-        parts = name.split("/")
+        name = e.get("run_name", e["name"]).removesuffix("/real_time")
+        parts = re.sub(r"/iterations:\d+$", "", name).split("/")
         if len(parts) < 4 or not parts[-1].isdigit():
             continue
         # The task may hold a slash itself (rays/coherent): n, path and method are the last three.
@@ -506,8 +506,9 @@ def plot(runs, tasks, title, filename):
         factor, label = prefix(max(r.rate for r in rs), unit_of(task))
         values = [r.rate / factor for r in rs]
         ax.barh(range(len(rs)), values, color=[colours[kind(r)] for r in rs])
-        ax.set_yticks(range(len(rs)), [f"{r.method} / {r.path}" + ("" if n else f" / {size(r)}")
-                                       for r in rs], fontsize=9)
+        ax.set_yticks(range(len(rs)),
+                      [f"{r.method} / {r.path}" + ("" if n is not None else f" / {size(r)}")
+                       for r in rs], fontsize=9)
         ax.invert_yaxis()
         log = max(values) / min(values) > 30
         if log:
@@ -516,7 +517,7 @@ def plot(runs, tasks, title, filename):
         for i, v in enumerate(values):
             ax.text(v, i, f" {v:.3g}", va="center", fontsize=8)
         ax.set_xlim(right=max(values) * (3 if log else 1.12))
-        ax.set_title(task + (f", N = {size(rs[0])}" if n else ""), fontsize=10)
+        ax.set_title(task + (f", N = {size(rs[0])}" if n is not None else ""), fontsize=10)
         ax.set_xlabel(f"throughput ({label}{', log scale' if log else ''}; higher is better)",
                       fontsize=9)
         ax.grid(axis="x", alpha=0.3)
