@@ -546,12 +546,14 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     const auto resting = And(hit, Le(Neg(dot(vh, normal)), p.threshold));
     const auto arrived = Gt(first * Neg(dot(dir, normal)), p.twoSkins);
     const auto moves = And(hit, Or(Not(resting), arrived));
-    Vec3L<V> xs = contact, vs = IfThenElse(resting, vh, respond(p, vh, normal));
+    const auto bounces = And(hit, Not(resting));
+    Vec3L<V> xs = contact,
+             vs = AllFalse(d, bounces) ? vh : IfThenElse(bounces, respond(p, vh, normal), vh);
     pushOut(d, p, rows, moves, xs, vs, counts);  // a contact in a corner between obstacles
     x0 = IfThenElse(moves, xs, x0);
     v0 = IfThenElse(moves, vs, v0);
     tau = IfThenElse(moves, (p.one - first) * tau, tau);
-    rest(p, resting, normal, tau, v0, a);
+    if (!AllFalse(d, resting)) rest(p, resting, normal, tau, v0, a);
     Vec3L<V> xn = x0, vn = v0;
     integrate(p, xn, vn, tau, a);
     x1 = IfThenElse(hit, xn, x1);
