@@ -100,9 +100,8 @@ core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obst
   const reference::ObstacleSetT<float> set = obstacleSet(obstacles);
   const std::size_t parts = (v.count + kPartition - 1) / kPartition;
   std::vector<core::ParticleCounts> counts(parts);
-  // The path is read once, before the threads start (obstacles the kernel cannot test lane-wide:
-  // the reference on every path); plainLoopsActive: the benchmarks' and the
-  // tests' second baseline.
+  // The path is read once, before the threads start. Obstacles the kernel cannot test lane-wide
+  // run the reference on every path; plainLoopsActive: the benchmarks' and tests' second baseline.
   const bool reference = referencePathActive() || !laneWide(obstacles);
   const auto& kernel = plainLoopsActive() ? simd::stepParticlesAutovec : simd::stepParticles;
   const auto run = [&](std::size_t part) {
