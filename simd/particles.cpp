@@ -147,21 +147,25 @@ HWY_INLINE void integrate(const Params<D>& p, Vec3L<V>& x, Vec3L<V>& v, V dt, co
   }
 }
 
-// A path's ends, each widened by a slack far above the rounding of the exact tests where the
+// A path's box, widened by a slack far above the rounding of the exact tests where the
 // coordinates are large (1e-4 of their magnitudes, where the tests round at some 1e-6 of them),
 // for the rows' culls: a NaN or infinite coordinate makes the slack NaN or infinite, and such a
 // lane is never culled.
 template <class V>
-struct PathEnds {
-  Vec3L<V> fromLo, fromHi, toLo, toHi;
+struct PathBox {
+  Vec3L<V> lo, hi;
 };
 template <class D, class V = LaneOf<D>>
-HWY_INLINE PathEnds<V> pathEnds(const Params<D>& p, const Vec3L<V>& from, const Vec3L<V>& to) {
+HWY_INLINE PathBox<V> pathBox(const Params<D>& p, const Vec3L<V>& from, const Vec3L<V>& to) {
   const V slack =
       (Abs(from[0]) + Abs(from[1]) + Abs(from[2]) + Abs(to[0]) + Abs(to[1]) + Abs(to[2])) *
       p.slackScale;
-  const Vec3L<V> s{{slack, slack, slack}};
-  return {from - s, from + s, to - s, to + s};
+  PathBox<V> box;
+  for (int k = 0; k < 3; ++k) {
+    box.lo[k] = Min(from[k], to[k]) - slack;
+    box.hi[k] = Max(from[k], to[k]) + slack;
+  }
+  return box;
 }
 
 // A surface met: in which lanes, where (the fraction s of the path, or the exit point), its
@@ -178,7 +182,7 @@ struct Surface {
 // columns normalized() as Eigen does (v / sqrt(|v|^2) when |v|^2 > 0, else v), hitObb's normal;
 // and a world box around the solid, grown by a margin far above the rounding of the exact tests
 // (a thousandth of the solid's size and place, where the rounding is some 1e-6 of them), so that
-// with PathEnds' slack a point or a path that misses it cannot touch the solid in any computed
+// with PathBox's slack a point or a path that misses it cannot touch the solid in any computed
 // test.
 struct RowData {
   core::ObstacleRow::Kind kind;
@@ -249,12 +253,9 @@ struct Row {
 
   // The lanes whose path may come near the row's solid: those not wholly beyond one face of its
   // box (a NaN compares false: such a lane is tested).
-  HWY_INLINE MaskOf<D> near(const PathEnds<V>& path) const {
+  HWY_INLINE MaskOf<D> near(const PathBox<V>& path) const {
     auto away = Lt(lo[0], lo[0]);  // none
-    for (int k = 0; k < 3; ++k) {
-      away = Or(away, Or(And(Lt(path.fromHi[k], lo[k]), Lt(path.toHi[k], lo[k])),
-                         And(Gt(path.fromLo[k], hi[k]), Gt(path.toLo[k], hi[k]))));
-    }
+    for (int k = 0; k < 3; ++k) away = Or(away, Or(Lt(path.hi[k], lo[k]), Gt(path.lo[k], hi[k])));
     return Not(away);
   }
 };
@@ -441,14 +442,14 @@ HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, const 
 template <class D, class V = LaneOf<D>>
 HWY_INLINE void pushOut(D d, const Params<D>& p, const Rows<D>& rows, MaskOf<D> live, Vec3L<V>& x,
                         Vec3L<V>& v, core::ParticleCounts& counts) {
-  PathEnds<V> at = pathEnds(p, x, x);
+  PathBox<V> at = pathBox(p, x, x);
   for (const Row<D>& row : rows) {
     if (AllFalse(d, And(live, row.near(at)))) continue;
     const Surface<D> e = exitOf(d, p, row, x);
     const auto in = And(e.hit, live);
     if (AllFalse(d, in)) continue;
     x = IfThenElse(in, e.point + e.normal * p.skin, x);
-    at = pathEnds(p, x, x);
+    at = pathBox(p, x, x);
     const V vn = dot(v, e.normal);
     v = IfThenElse(And(in, Lt(vn, p.zero)), v - e.normal * vn, v);
     counts.pushedOut += CountTrue(d, in);
@@ -514,7 +515,7 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
   auto live = active;
   for (int bounce = 0;; ++bounce) {
     const Vec3L<V> dir = x1 - x0;
-    const PathEnds<V> path = pathEnds(p, x0, x1);
+    const PathBox<V> path = pathBox(p, x0, x1);
     live = And(live, Not(Eq(dot(dir, dir), p.zero)));  // not moving: meets nothing
     // The first entry per lane; ties go to the earlier row.
     auto found = Lt(p.one, p.zero);
