@@ -124,27 +124,12 @@ struct Params {
         forces(p.forces) {}
 };
 
+#include "core/particle_integrate-inl.hpp"
+
 // integrate() with a constant acceleration a.
 template <class D, class V = LaneOf<D>>
 HWY_INLINE void integrate(const Params<D>& p, Vec3L<V>& x, Vec3L<V>& v, V dt, const Vec3L<V>& a) {
-  switch (p.integrator) {
-    case core::ParticleStepParams::kExplicitEuler:
-      x = x + v * dt;
-      v = v + a * dt;
-      break;
-    case core::ParticleStepParams::kSemiImplicitEuler:
-      v = v + a * dt;
-      x = x + v * dt;
-      break;
-    case core::ParticleStepParams::kVelocityVerlet:
-      x = x + v * dt + a * (p.half * dt * dt);
-      v = v + (a + a) * (p.half * dt);
-      break;
-    case core::ParticleStepParams::kPositionVerlet:
-      x = x + v * dt + a * (dt * dt);
-      v = v + a * dt;
-      break;
-  }
+  integrateStep(p.integrator, x, v, dt, p.half, [&](const Vec3L<V>&) { return a; });
 }
 
 // A path's box, widened by a slack far above the rounding of the exact tests where the
