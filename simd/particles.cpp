@@ -1,6 +1,8 @@
 // The particle step (particles.hpp) over the particle streams, a particle per lane: forces,
 // damping, the integrator, the push out of obstacles a particle starts in, and the collision of
-// the path travelled with every obstacle row, bounce after bounce while any lane still meets one.
+// the path travelled with every obstacle row, bounce after bounce (or resting contact) while any
+// lane still meets one. A row whose box no live lane's path comes near is skipped for the vector:
+// a cull with a margin far above rounding, so it changes no result.
 // The arithmetic is the scalar reference's (src/reference/particles/step-inl.hpp and the ray hits
 // of src/reference/geometry3d/raycast-inl.hpp) operation for operation: Eigen's x + (y + z) sums,
 // the same products and quotients in the same order, IEEE square roots and divisions, no
