@@ -9,7 +9,14 @@ namespace simdphys::core {
 
 // ParticleSettings for one substep: dt is the substep, damping its share of the per-step factor.
 struct ParticleStepParams {
-  std::uint32_t integrator;  // Integrator's value
+  // Integrator's values (particles.hpp; src/particles/step.cpp checks that they agree).
+  enum Method : std::uint32_t {
+    kExplicitEuler,
+    kSemiImplicitEuler,
+    kVelocityVerlet,
+    kPositionVerlet
+  };
+  std::uint32_t integrator;  // a Method
   float gravity[3];
   float dt, damping, drag, restitution, friction, threshold, skin;
   int maxBounces;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/particle_step.hpp"
 #include "core/view.hpp"
 #include "simdphys/core.hpp"
 #include "simdphys/stream_fields.hpp"
@@ -87,6 +88,7 @@ using ObbsView = core::View<fields::Obb>;
 using CirclesView = core::View<fields::Circle>;
 using RectsView = core::View<fields::Rect>;
 using OrientedRectsView = core::View<fields::OrientedRect>;
+using ParticlesView = core::View<fields::Particle, float>;  // stepped in place
 
 // One box as a query.
 struct Box {
@@ -258,6 +260,18 @@ extern const Kernel<void(const SortedRects2d&rects, std::vector<Pair>&out)> swee
 // Every overlapping pair (i, j), i < j, of a rectangle stream, appended in ascending order.
 extern const Kernel<void(const RectsView&v, std::vector<Pair>&out)> bruteRects2d,
     bruteRects2dAutovec;
+
+// ---- particles (particles.hpp, src/particles/step.cpp) ------------------------------------------
+// One substep of the particles [begin, end) (begin a multiple of 16), in place, against every
+// obstacle row in order: bit for bit what the float reference's stepParticle gives each particle
+// (src/reference/particles/step-inl.hpp), and what they met, counted as it counts. Whole vectors
+// are read and written up to end rounded up to a vector (within `padded`); lanes past `end` and
+// pinned ones (inverse mass not > 0) are written back unchanged.
+extern const Kernel<core::ParticleCounts(const ParticlesView&particles, std::size_t begin,
+                                         std::size_t end, const core::ObstacleRow*obstacles,
+                                         std::size_t obstacleCount,
+                                         const core::ParticleStepParams&params)>
+    stepParticles, stepParticlesAutovec;
 
 // ---- meshes: rays against a mesh's BVH (mesh_bvh.hpp, bvh_ray.cpp) ----------------------------
 }  // namespace simdphys::simd

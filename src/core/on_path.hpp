@@ -28,9 +28,10 @@ std::size_t selectOnPath(const core::View<Fields>& v, std::vector<std::uint32_t>
 }
 
 namespace detail {
-// While set (testing/pairs.hpp, for the tests and the benchmarks' second baseline), the pair
-// finders run their kernels as the plain loops left to the auto-vectoriser, on the best SIMD
-// target, whatever the active path. Not thread-safe, as setPath() is not.
+// While set (testing/pairs.hpp, for the tests and the benchmarks' second baseline), kernels run
+// as the plain loops left to the auto-vectoriser: the pair finders' on the best SIMD target,
+// whatever the active path; the particle step's on the active path if it is a SIMD one. Not
+// thread-safe, as setPath() is not.
 bool plainLoopsActive();
 void setPlainLoops(bool on);
 }  // namespace detail

@@ -3,11 +3,19 @@
 
 #include <omp.h>
 
+#include "simd/kernels.hpp"
+#include "src/core/on_path.hpp"
 #include "src/reference/particles/step-inl.hpp"
 
 namespace simdphys::detail {
 
 namespace F = fields;
+
+static_assert(
+    std::uint32_t(Integrator::kExplicitEuler) == core::ParticleStepParams::kExplicitEuler &&
+    std::uint32_t(Integrator::kSemiImplicitEuler) == core::ParticleStepParams::kSemiImplicitEuler &&
+    std::uint32_t(Integrator::kVelocityVerlet) == core::ParticleStepParams::kVelocityVerlet &&
+    std::uint32_t(Integrator::kPositionVerlet) == core::ParticleStepParams::kPositionVerlet);
 
 core::View<F::Particle, float> ParticleStreams::view(ParticleSystem& s) {
   core::View<F::Particle, float> v{{}, s.size(), s.padded()};
@@ -87,15 +95,19 @@ core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obst
   params.threshold = s.restitutionThreshold, params.skin = s.skin;
   params.maxBounces = s.maxBounces;
   params.forces = system.hasForces() || s.drag != 0;
-  (void)rows;  // the SIMD kernel's form of the obstacles
 
   const core::View<F::Particle, float> v = ParticleStreams::view(system);
   const reference::ObstacleSetT<float> set = obstacleSet(obstacles);
   const std::size_t parts = (v.count + kPartition - 1) / kPartition;
   std::vector<core::ParticleCounts> counts(parts);
+  // The path is read once, before the threads start. Obstacles the kernel cannot test lane-wide
+  // run the reference on every path; plainLoopsActive: the benchmarks' and tests' second baseline.
+  const bool reference = referencePathActive() || !laneWide(obstacles);
+  const auto& kernel = plainLoopsActive() ? simd::stepParticlesAutovec : simd::stepParticles;
   const auto run = [&](std::size_t part) {
     const std::size_t begin = part * kPartition, end = std::min(v.count, begin + kPartition);
-    counts[part] = referenceRange(v, begin, end, set, params);
+    counts[part] = reference ? referenceRange(v, begin, end, set, params)
+                             : kernel(v, begin, end, rows.data(), rows.size(), params);
   };
   if (parts > 1) {
     const int t = threads > 0 ? threads : omp_get_max_threads();

@@ -32,31 +32,13 @@ struct ParticleStep {
 
 using core::ParticleCounts;
 
+#include "core/particle_integrate-inl.hpp"
+
 // One step of length dt of x and v under the acceleration accel(x) (particles.hpp's formulas;
 // damping is the caller's). The world passes a constant; the closed-form tests an oscillator's.
 template <class T, class Accel>
 void integrate(Integrator integrator, Vec3<T>& x, Vec3<T>& v, T dt, Accel&& accel) {
-  const Vec3<T> a = accel(x);
-  switch (integrator) {
-    case Integrator::kExplicitEuler:
-      x = x + v * dt;
-      v = v + a * dt;
-      break;
-    case Integrator::kSemiImplicitEuler:
-      v = v + a * dt;
-      x = x + v * dt;
-      break;
-    case Integrator::kVelocityVerlet: {
-      x = x + v * dt + a * (T(0.5) * dt * dt);
-      const Vec3<T> a1 = accel(x);
-      v = v + (a + a1) * (T(0.5) * dt);
-      break;
-    }
-    case Integrator::kPositionVerlet:
-      x = x + v * dt + a * (dt * dt);
-      v = v + a * dt;
-      break;
-  }
+  integrateStep(std::uint32_t(integrator), x, v, dt, T(0.5), accel);
 }
 
 // Where a point strictly inside a solid leaves it by the shortest way, and the outward normal
