@@ -21,13 +21,17 @@ std::size_t disagreementWithDouble(const std::vector<std::uint32_t>& visible, bo
   std::vector<std::uint32_t> exact;
   if (spheres) {
     const SphereStream& s = w.spheres;
-    reference::cullSpheres<double>(f, widened(s.x().view()), widened(s.y().view()),
-                                   widened(s.z().view()), widened(s.r().view()), exact);
+    reference::cullSpheres<double>(f, widened(s.field(fields::Sphere::x).view()),
+                                   widened(s.field(fields::Sphere::y).view()),
+                                   widened(s.field(fields::Sphere::z).view()),
+                                   widened(s.field(fields::Sphere::r).view()), exact);
   } else {
     const BoundsStream& b = w.boxes;
-    reference::cullBoxes<double>(f, widened(b.cx().view()), widened(b.cy().view()),
-                                 widened(b.cz().view()), widened(b.ex().view()),
-                                 widened(b.ey().view()), widened(b.ez().view()), exact);
+    reference::cullBoxes<double>(
+        f, widened(b.field(fields::Bounds::cx).view()), widened(b.field(fields::Bounds::cy).view()),
+        widened(b.field(fields::Bounds::cz).view()), widened(b.field(fields::Bounds::ex).view()),
+        widened(b.field(fields::Bounds::ey).view()), widened(b.field(fields::Bounds::ez).view()),
+        exact);
   }
   std::vector<std::uint32_t> diff;
   std::set_symmetric_difference(visible.begin(), visible.end(), exact.begin(), exact.end(),

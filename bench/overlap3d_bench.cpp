@@ -117,7 +117,7 @@ void closestBody(benchmark::State& state, Fill fill) {
   PointStream out;
   for (auto _ : state) {
     for (const Vec3f& p : queries().points) fill(p, boxes, out);
-    benchmark::DoNotOptimize(out.x().data());
+    benchmark::DoNotOptimize(out.field(fields::Point::x).data());
   }
   state.SetItemsProcessed(std::int64_t(state.iterations() * kQueries * boxes.size()));
   std::uint64_t differing = 0;

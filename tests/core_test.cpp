@@ -60,15 +60,16 @@ TEST(Streams, AlignedAndPaddedWithInertValues) {
   for (int i = 0; i < 17; ++i) boxes.push({Vec3f::Constant(float(i)), Vec3f::Constant(i + 1.0f)});
   EXPECT_EQ(boxes.size(), 17u);
   EXPECT_EQ(boxes.padded(), 32u);  // next multiple of kStreamPad = 16
-  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(boxes.minX().data()) % kStreamAlign, 0u);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(boxes.field(fields::Box::minX).data()) % kStreamAlign,
+            0u);
   for (std::size_t i = 17; i < boxes.padded(); ++i) {
-    EXPECT_EQ(boxes.minX()[i], kInf);
-    EXPECT_EQ(boxes.maxZ()[i], -kInf);
+    EXPECT_EQ(boxes.field(fields::Box::minX)[i], kInf);
+    EXPECT_EQ(boxes.field(fields::Box::maxZ)[i], -kInf);
   }
   SphereStream spheres;
   spheres.push({Vec3f::Zero(), 1});
   EXPECT_EQ(spheres.padded(), 16u);
-  EXPECT_EQ(spheres.r()[15], -kInf);
+  EXPECT_EQ(spheres.field(fields::Sphere::r)[15], -kInf);
 }
 
 TEST(Streams, RoundTripsValues) {
@@ -125,7 +126,9 @@ TEST(Streams, PointStreamOverwriteRestoresThePadding) {
     for (std::size_t i = 0; i < paddedSize(5); ++i) x[i] = y[i] = z[i] = kNaN;
   });
   for (std::size_t i = 5; i < points.padded(); ++i)
-    EXPECT_TRUE(points.x()[i] == 0 && points.y()[i] == 0 && points.z()[i] == 0) << i;
+    EXPECT_TRUE(points.field(fields::Point::x)[i] == 0 && points.field(fields::Point::y)[i] == 0 &&
+                points.field(fields::Point::z)[i] == 0)
+        << i;
 }
 
 using test::expectError;

@@ -14,13 +14,15 @@ using test::OnEveryPath;
 
 std::vector<std::uint32_t> referenceCull(const Frustum& f, const SphereStream& s) {
   std::vector<std::uint32_t> v;
-  reference::cullSpheres(f, s.x().view(), s.y().view(), s.z().view(), s.r().view(), v);
+  reference::cullSpheres(f, s.field(fields::Sphere::x).view(), s.field(fields::Sphere::y).view(),
+                         s.field(fields::Sphere::z).view(), s.field(fields::Sphere::r).view(), v);
   return v;
 }
 std::vector<std::uint32_t> referenceCull(const Frustum& f, const BoundsStream& b) {
   std::vector<std::uint32_t> v;
-  reference::cullBoxes(f, b.cx().view(), b.cy().view(), b.cz().view(), b.ex().view(), b.ey().view(),
-                       b.ez().view(), v);
+  reference::cullBoxes(f, b.field(fields::Bounds::cx).view(), b.field(fields::Bounds::cy).view(),
+                       b.field(fields::Bounds::cz).view(), b.field(fields::Bounds::ex).view(),
+                       b.field(fields::Bounds::ey).view(), b.field(fields::Bounds::ez).view(), v);
   return v;
 }
 

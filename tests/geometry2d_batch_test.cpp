@@ -324,22 +324,22 @@ TEST(Streams2d, RoundTripAndPadding) {
   circles.set(0, {{4, 5}, 0});
   EXPECT_EQ(circles[0].radius, 0.0f);
   ASSERT_EQ(circles.padded(), kStreamPad);
-  EXPECT_EQ(circles.r()[1], -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(circles.field(fields::Circle::r)[1], -std::numeric_limits<float>::infinity());
 
   RectStream rects;
   rects.push({{1, 2}, {3, 4}});
   EXPECT_EQ(rects[0].max, Vec2f(3, 4));
-  EXPECT_EQ(rects.minX()[5], std::numeric_limits<float>::infinity());
-  EXPECT_EQ(rects.maxY()[5], -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(rects.field(fields::Rect::minX)[5], std::numeric_limits<float>::infinity());
+  EXPECT_EQ(rects.field(fields::Rect::maxY)[5], -std::numeric_limits<float>::infinity());
 
   OrientedRectStream orects;
   const OrientedRect b = orect(1, 2, 3, 4, 0.7f);
   orects.push(b);
   EXPECT_EQ(orects[0].rotation, b.rotation);
   // The stored axes are OrientedRect::axes()'s, bit for bit.
-  EXPECT_EQ(orects.cos()[0], b.axes()(0, 0));
-  EXPECT_EQ(orects.sin()[0], b.axes()(1, 0));
-  EXPECT_EQ(orects.hx()[3], -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(orects.field(fields::OrientedRect::cos)[0], b.axes()(0, 0));
+  EXPECT_EQ(orects.field(fields::OrientedRect::sin)[0], b.axes()(1, 0));
+  EXPECT_EQ(orects.field(fields::OrientedRect::hx)[3], -std::numeric_limits<float>::infinity());
 }
 
 TEST(Streams2d, RejectBadElementsNamingThem) {

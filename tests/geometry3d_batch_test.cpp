@@ -99,7 +99,8 @@ TEST_P(Batch3d, ClosestPointsEqualTheScalarFunction) {
     ASSERT_EQ(points.size(), boxes.size());
     for (std::size_t i = 0; i < boxes.size(); ++i)
       ASSERT_EQ(points[i], closestPoint(boxes[i], p)) << "box " << i;  // a clamp: exact
-    for (std::size_t i = points.size(); i < points.padded(); ++i) EXPECT_EQ(points.x()[i], 0.0f);
+    for (std::size_t i = points.size(); i < points.padded(); ++i)
+      EXPECT_EQ(points.field(fields::Point::x)[i], 0.0f);
   }
 }
 

@@ -15,8 +15,9 @@ using test::OnEveryPath;
 
 std::vector<std::uint32_t> bruteCull(const Frustum& f, const BoundsStream& b) {
   std::vector<std::uint32_t> v;
-  reference::cullBoxes(f, b.cx().view(), b.cy().view(), b.cz().view(), b.ex().view(), b.ey().view(),
-                       b.ez().view(), v);
+  reference::cullBoxes(f, b.field(fields::Bounds::cx).view(), b.field(fields::Bounds::cy).view(),
+                       b.field(fields::Bounds::cz).view(), b.field(fields::Bounds::ex).view(),
+                       b.field(fields::Bounds::ey).view(), b.field(fields::Bounds::ez).view(), v);
   return v;
 }
 
@@ -131,8 +132,10 @@ TEST_P(SceneOctree, MovedBoxesAreFoundAtTheirNewPlace) {
   std::vector<std::uint32_t> moved;
   BoundsStream next;
   for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-    Vec3f c(boxes.cx()[i], boxes.cy()[i], boxes.cz()[i]);
-    const Vec3f h(boxes.ex()[i], boxes.ey()[i], boxes.ez()[i]);
+    Vec3f c(boxes.field(fields::Bounds::cx)[i], boxes.field(fields::Bounds::cy)[i],
+            boxes.field(fields::Bounds::cz)[i]);
+    const Vec3f h(boxes.field(fields::Bounds::ex)[i], boxes.field(fields::Bounds::ey)[i],
+                  boxes.field(fields::Bounds::ez)[i]);
     if (i % 7 == 0) c = {pos(rng), pos(rng), pos(rng)}, moved.push_back(i);
     next.push(c, h);
   }

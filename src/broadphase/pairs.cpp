@@ -42,10 +42,12 @@ Grid chooseGrid(const BoxStream& b, PairMethod method) {
   if (method != PairMethod::kGridSweep || n == 0) return g;
   float loY = std::numeric_limits<float>::infinity(), hiY = -loY, loZ = loY, hiZ = -loY;
   double sizeY = 0, sizeZ = 0;
+  using F = fields::Box;
   for (std::size_t i = 0; i < n; ++i) {
-    loY = std::min(loY, b.minY()[i]), hiY = std::max(hiY, b.maxY()[i]);
-    loZ = std::min(loZ, b.minZ()[i]), hiZ = std::max(hiZ, b.maxZ()[i]);
-    sizeY += double(b.maxY()[i]) - b.minY()[i], sizeZ += double(b.maxZ()[i]) - b.minZ()[i];
+    loY = std::min(loY, b.field(F::minY)[i]), hiY = std::max(hiY, b.field(F::maxY)[i]);
+    loZ = std::min(loZ, b.field(F::minZ)[i]), hiZ = std::max(hiZ, b.field(F::maxZ)[i]);
+    sizeY += double(b.field(F::maxY)[i]) - b.field(F::minY)[i];
+    sizeZ += double(b.field(F::maxZ)[i]) - b.field(F::minZ)[i];
   }
   const double perAxis = std::sqrt(double(n) / kBoxesPerCell);
   auto cells = [&](double extent, double meanSize) {
@@ -131,9 +133,12 @@ struct PairFinder::Scratch {
     const std::size_t n = b.size(), cells = std::size_t(g.ny) * g.nz;
     y0.resize(n), y1.resize(n), z0.resize(n), z1.resize(n);
     begin.assign(cells + 1, 0);
+    using F = fields::Box;
     for (std::size_t i = 0; i < n; ++i) {
-      y0[i] = std::int16_t(g.cellY(b.minY()[i])), y1[i] = std::int16_t(g.cellY(b.maxY()[i]));
-      z0[i] = std::int16_t(g.cellZ(b.minZ()[i])), z1[i] = std::int16_t(g.cellZ(b.maxZ()[i]));
+      y0[i] = std::int16_t(g.cellY(b.field(F::minY)[i]));
+      y1[i] = std::int16_t(g.cellY(b.field(F::maxY)[i]));
+      z0[i] = std::int16_t(g.cellZ(b.field(F::minZ)[i]));
+      z1[i] = std::int16_t(g.cellZ(b.field(F::maxZ)[i]));
       for (int cy = y0[i]; cy <= y1[i]; ++cy)
         for (int cz = z0[i]; cz <= z1[i]; ++cz) ++begin[std::size_t(cy) * g.nz + cz + 1];
     }
@@ -141,8 +146,15 @@ struct PairFinder::Scratch {
     entries.resize(begin[cells]);
     cursor.assign(begin.begin(), begin.end() - 1);
     for (std::uint32_t i = 0; i < n; ++i) {
-      Entry e{b.minX()[i], b.maxX()[i], b.minY()[i], b.maxY()[i], b.minZ()[i],
-              b.maxZ()[i], i,           y0[i],       z0[i]};
+      Entry e{b.field(F::minX)[i],
+              b.field(F::maxX)[i],
+              b.field(F::minY)[i],
+              b.field(F::maxY)[i],
+              b.field(F::minZ)[i],
+              b.field(F::maxZ)[i],
+              i,
+              y0[i],
+              z0[i]};
       for (int cy = y0[i]; cy <= y1[i]; ++cy)
         for (int cz = z0[i]; cz <= z1[i]; ++cz) entries[cursor[std::size_t(cy) * g.nz + cz]++] = e;
     }

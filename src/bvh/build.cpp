@@ -282,9 +282,11 @@ AlignedVector<std::uint32_t> alignLeaves(AlignedVector<BvhNode>& nodes,
 void Bvh::build(const BoxStream& boxes) {
   AlignedVector<PrimRef> prims;  // reserved, not sized: a sized vector is zeroed first
   prims.reserve(boxes.size());
+  using F = fields::Box;
   for (std::uint32_t i = 0; i < boxes.size(); ++i)
-    prims.push_back(PrimRef({boxes.minX()[i], boxes.minY()[i], boxes.minZ()[i]},
-                            {boxes.maxX()[i], boxes.maxY()[i], boxes.maxZ()[i]}, i));
+    prims.push_back(
+        PrimRef({boxes.field(F::minX)[i], boxes.field(F::minY)[i], boxes.field(F::minZ)[i]},
+                {boxes.field(F::maxX)[i], boxes.field(F::maxY)[i], boxes.field(F::maxZ)[i]}, i));
   buildFrom(std::move(prims), BvhBuildOptions{}, "Bvh::build");
 }
 
@@ -369,9 +371,12 @@ void Bvh::refit(const BoxStream& boxes) {
   requireBoxTree("Bvh::refit(BoxStream)");
   refitNodes(nodes_, [&](std::uint32_t c) {
     const std::uint32_t id = BvhNode::leafFirst(c);
+    using F = fields::Box;
     Bounds b;
-    const float lo[3] = {boxes.minX()[id], boxes.minY()[id], boxes.minZ()[id]};
-    const float hi[3] = {boxes.maxX()[id], boxes.maxY()[id], boxes.maxZ()[id]};
+    const float lo[3] = {boxes.field(F::minX)[id], boxes.field(F::minY)[id],
+                         boxes.field(F::minZ)[id]};
+    const float hi[3] = {boxes.field(F::maxX)[id], boxes.field(F::maxY)[id],
+                         boxes.field(F::maxZ)[id]};
     b.grow(lo), b.grow(hi);
     return b;
   });

@@ -42,9 +42,10 @@ Bands chooseBands(const RectStream& r, bool banded) {
   if (!banded || n == 0) return b;
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
   double height = 0;
+  using F = fields::Rect;
   for (std::size_t i = 0; i < n; ++i) {
-    lo = std::min(lo, r.minY()[i]), hi = std::max(hi, r.maxY()[i]);
-    height += double(r.maxY()[i]) - r.minY()[i];
+    lo = std::min(lo, r.field(F::minY)[i]), hi = std::max(hi, r.field(F::maxY)[i]);
+    height += double(r.field(F::maxY)[i]) - r.field(F::minY)[i];
   }
   const double extent = double(hi) - lo, meanHeight = height / double(n);
   double count = double(n) / kRectsPerBand;
@@ -75,8 +76,9 @@ struct PairFinder2d::Scratch {
     const std::size_t n = r.size(), bands = std::size_t(b.count);
     loBand.resize(n), hiBand.resize(n);
     begin.assign(bands + 1, 0);
+    using F = fields::Rect;
     for (std::size_t i = 0; i < n; ++i) {
-      loBand[i] = b.band(r.minY()[i]), hiBand[i] = b.band(r.maxY()[i]);
+      loBand[i] = b.band(r.field(F::minY)[i]), hiBand[i] = b.band(r.field(F::maxY)[i]);
       for (int k = loBand[i]; k <= hiBand[i]; ++k) ++begin[std::size_t(k) + 1];
     }
     for (std::size_t k = 0; k < bands; ++k) begin[k + 1] += begin[k] + std::uint32_t(kStreamPad);
@@ -86,12 +88,13 @@ struct PairFinder2d::Scratch {
         maxY.assign(size, -inf);
     id.assign(size, 0), bandLo.assign(size, 0);
     cursor.assign(begin.begin(), begin.end() - 1);
-    const auto& order = sorter.sort(r.minX().data(), n);
+    const auto& order = sorter.sort(r.field(F::minX).data(), n);
     for (const std::uint32_t i : order)
       for (int k = loBand[i]; k <= hiBand[i]; ++k) {
         const std::uint32_t at = cursor[std::size_t(k)]++;
-        minX[at] = r.minX()[i], maxX[at] = r.maxX()[i], minY[at] = r.minY()[i];
-        maxY[at] = r.maxY()[i], id[at] = i, bandLo[at] = loBand[i];
+        minX[at] = r.field(F::minX)[i], maxX[at] = r.field(F::maxX)[i];
+        minY[at] = r.field(F::minY)[i], maxY[at] = r.field(F::maxY)[i];
+        id[at] = i, bandLo[at] = loBand[i];
       }
   }
 
@@ -140,10 +143,10 @@ void bruteReference(const RectStream& r, std::vector<Pair>& pairs) {
 void quadtreePairs(const RectStream& r, std::vector<Pair>& pairs) {
   pairs.clear();
   if (r.size() == 0) return;
-  Rect bounds{{r.minX()[0], r.minY()[0]}, {r.maxX()[0], r.maxY()[0]}};
+  Rect bounds = r[0];
   for (std::size_t i = 1; i < r.size(); ++i) {
-    bounds.min = bounds.min.cwiseMin(Vec2f(r.minX()[i], r.minY()[i]));
-    bounds.max = bounds.max.cwiseMax(Vec2f(r.maxX()[i], r.maxY()[i]));
+    bounds.min = bounds.min.cwiseMin(r[i].min);
+    bounds.max = bounds.max.cwiseMax(r[i].max);
   }
   Quadtree tree(bounds);
   for (std::uint32_t i = 0; i < r.size(); ++i) tree.insert(i, r[i]);

@@ -2,10 +2,9 @@
 // names a query once for a pair or kind of shapes, for the scalar T its list is written for.
 #pragma once
 
-// f(a, b) and f(b, a): the pair queries of two kinds of shapes come in both argument orders.
-#define SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, R, f, A, B) \
-  template R f(const A<T>&, const B<T>&);               \
-  template R f(const B<T>&, const A<T>&);
+// f(a, b) for two kinds of shapes, in the order the pair is written in (the other order swaps the
+// arguments inline: primitives.hpp).
+#define SIMDPHYS_INSTANTIATE_PAIR(T, R, f, A, B) template R f(const A<T>&, const B<T>&);
 
 // f(a, b) for two shapes of one kind.
 #define SIMDPHYS_INSTANTIATE_SAME_KIND(T, R, f, A) template R f(const A<T>&, const A<T>&);

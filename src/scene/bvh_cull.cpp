@@ -42,8 +42,10 @@ class FrustumWalk : public reference::NodeWalk {
       if (BvhNode::isLeaf(c)) {
         // The exact per-object test on the object's own centre and extents, as the flat cull.
         const std::uint32_t id = BvhNode::leafFirst(c);
-        const Vec3f centre(boxes_.cx()[id], boxes_.cy()[id], boxes_.cz()[id]);
-        const Vec3f half(boxes_.ex()[id], boxes_.ey()[id], boxes_.ez()[id]);
+        using F = fields::Bounds;
+        const Vec3f centre(boxes_.field(F::cx)[id], boxes_.field(F::cy)[id],
+                           boxes_.field(F::cz)[id]);
+        const Vec3f half(boxes_.field(F::ex)[id], boxes_.field(F::ey)[id], boxes_.field(F::ez)[id]);
         if (f_.intersectsBox(centre, half)) detail::markSeen(seen_, id);
         continue;
       }

@@ -10,7 +10,8 @@ std::size_t cull(const Frustum& f, const SphereStream& s, std::vector<std::uint3
   return selectOnPath(
       view(s), visible,
       [&](std::uint32_t i) {
-        return f.intersectsSphere({s.x()[i], s.y()[i], s.z()[i]}, s.r()[i]);
+        const Sphere sphere = s[i];
+        return f.intersectsSphere(sphere.center, sphere.radius);
       },
       [&](const auto& v, std::uint32_t* out) { return simd::cullSpheres(planes(f), v, out); });
 }
@@ -20,8 +21,9 @@ std::size_t cull(const Frustum& f, const BoundsStream& b, std::vector<std::uint3
   return selectOnPath(
       view(b), visible,
       [&](std::uint32_t i) {
-        return f.intersectsBox({b.cx()[i], b.cy()[i], b.cz()[i]},
-                               {b.ex()[i], b.ey()[i], b.ez()[i]});
+        using F = fields::Bounds;
+        return f.intersectsBox({b.field(F::cx)[i], b.field(F::cy)[i], b.field(F::cz)[i]},
+                               {b.field(F::ex)[i], b.field(F::ey)[i], b.field(F::ez)[i]});
       },
       [&](const auto& v, std::uint32_t* out) { return simd::cullBounds(planes(f), v, out); });
 }

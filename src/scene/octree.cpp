@@ -125,7 +125,9 @@ void Octree::update(std::span<const std::uint32_t> moved, const BoundsStream& bo
 }
 
 std::array<float, 6> Octree::source(const BoundsStream& b, std::size_t i) {
-  return {b.cx()[i], b.cy()[i], b.cz()[i], b.ex()[i], b.ey()[i], b.ez()[i]};
+  using F = fields::Bounds;
+  return {b.field(F::cx)[i], b.field(F::cy)[i], b.field(F::cz)[i],
+          b.field(F::ex)[i], b.field(F::ey)[i], b.field(F::ez)[i]};
 }
 
 template <class F>

@@ -66,6 +66,7 @@ template <class T>
 Manifold2T<T> flipped(Manifold2T<T> m);
 
 // ---- intersection tests ----------------------------------------------------------------------
+// Each pair is declared in one order; the other order is primitives.hpp's intersects(a, b).
 
 // |cb - ca| <= ra + rb within the tolerance times max(|cb - ca|, ra + rb).
 template <class T>
@@ -75,35 +76,27 @@ bool intersects(const CircleT<T>& a, const CircleT<T>& b);
 // radius); the closest point is an exact clamp. A zero-radius circle is an exact point test.
 template <class T>
 bool intersects(const CircleT<T>& c, const RectT<T>& r);
-template <class T>
-bool intersects(const RectT<T>& r, const CircleT<T>& c);
 
 // As circle-rectangle in the rectangle's frame, within the tolerance times radius + |center
 // offset| + the larger half extent (the rotation into the frame rounds by 2 eps |offset|).
 template <class T>
 bool intersects(const CircleT<T>& c, const OrientedRectT<T>& b);
-template <class T>
-bool intersects(const OrientedRectT<T>& b, const CircleT<T>& c);
 
-// Closed interval overlap on both axes, exact.
-template <class T>
-bool intersects(const RectT<T>& a, const RectT<T>& b);
-// The same under the 3D name (geometry3d's overlaps(Aabb, Aabb)).
-template <class T>
-bool overlaps(const RectT<T>& a, const RectT<T>& b);
+// Two rectangles: intersects(RectT, RectT) of primitives.hpp, closed interval overlap on both
+// axes, exact.
 
 // SAT in a frame centered on the oriented rectangle, within the tolerance times |offset of the
 // centers| + the sum of all half extents.
 template <class T>
 bool intersects(const RectT<T>& r, const OrientedRectT<T>& b);
-template <class T>
-bool intersects(const OrientedRectT<T>& b, const RectT<T>& r);
 
 // SAT in a frame centered on the first rectangle (of the canonical order), same tolerance.
 template <class T>
 bool intersects(const OrientedRectT<T>& a, const OrientedRectT<T>& b);
 
 // ---- manifolds -------------------------------------------------------------------------------
+// Each pair is declared in one order (that of intersects); the other order is the manifold of
+// that one, flipped (below).
 
 // Normal along the centers (+x if they coincide), depth ra + rb - distance, one contact halfway
 // between the two surfaces.
@@ -114,14 +107,10 @@ Manifold2T<T> collide(const CircleT<T>& a, const CircleT<T>& b);
 // the nearest face (see the header comment); one contact halfway between the surfaces.
 template <class T>
 Manifold2T<T> collide(const CircleT<T>& c, const RectT<T>& r);
-template <class T>
-Manifold2T<T> collide(const RectT<T>& r, const CircleT<T>& c);
 
 // As circle-rectangle, in the oriented rectangle's frame.
 template <class T>
 Manifold2T<T> collide(const CircleT<T>& c, const OrientedRectT<T>& b);
-template <class T>
-Manifold2T<T> collide(const OrientedRectT<T>& b, const CircleT<T>& c);
 
 // Exact interval arithmetic: the depth is the smallest of the four pushes (b out through +x, -x,
 // +y, -y; ties in that order), the contacts are the ends of the overlap of the faces, halfway
@@ -132,11 +121,14 @@ Manifold2T<T> collide(const RectT<T>& a, const RectT<T>& b);
 // SAT with clipping, in a frame centered on the oriented rectangle.
 template <class T>
 Manifold2T<T> collide(const RectT<T>& r, const OrientedRectT<T>& b);
-template <class T>
-Manifold2T<T> collide(const OrientedRectT<T>& b, const RectT<T>& r);
 
 // SAT with clipping, in a frame centered on the first rectangle of the canonical order.
 template <class T>
 Manifold2T<T> collide(const OrientedRectT<T>& a, const OrientedRectT<T>& b);
+
+// A pair in the other order than its collide is written in: that manifold seen from b.
+template <class A, class B>
+requires detail::SwappedPair<A, B>
+auto collide(const A& a, const B& b) { return flipped(collide(b, a)); }
 
 }  // namespace simdphys

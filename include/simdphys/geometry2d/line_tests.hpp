@@ -53,25 +53,20 @@ using RayHit2 = RayHit2T<float>;
 using RayHit2d = RayHit2T<double>;
 
 // ---- segments --------------------------------------------------------------------------------
+// (shape, segment), the other order: primitives.hpp's intersects(a, b).
 
 // The closest point of the segment to the center is within the radius, within the tolerance
 // times max(radius, |center - start|, length).
 template <class T>
 bool intersects(const Segment2T<T>& s, const CircleT<T>& c);
-template <class T>
-bool intersects(const CircleT<T>& c, const Segment2T<T>& s);
 
 // Slab test on t in [0, 1], relative to the start.
 template <class T>
 bool intersects(const Segment2T<T>& s, const RectT<T>& r);
-template <class T>
-bool intersects(const RectT<T>& r, const Segment2T<T>& s);
 
 // Slab test in the oriented rectangle's frame.
 template <class T>
 bool intersects(const Segment2T<T>& s, const OrientedRectT<T>& b);
-template <class T>
-bool intersects(const OrientedRectT<T>& b, const Segment2T<T>& s);
 
 // ---- raycasts --------------------------------------------------------------------------------
 

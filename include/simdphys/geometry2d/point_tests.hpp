@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "simdphys/geometry2d/primitives.hpp"
+#include "simdphys/point_tests.hpp"
 
 namespace simdphys {
 
@@ -29,10 +30,6 @@ bool contains(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& poin
 template <class T>
 bool contains(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point);
 
-// Closed rectangle, exact: min <= p <= max on both axes.
-template <class T>
-bool contains(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point);
-
 // Closed oriented rectangle: |local| <= halfExtents on both axes, within the tolerance times
 // |p - c| + the larger half extent (the rotation into the local frame rounds by about 2 eps |p -
 // c|).
@@ -41,18 +38,8 @@ bool contains(const OrientedRectT<T>& box, const detail::NoDeduce<Vec2<T>>& poin
 
 // ---- closest points -------------------------------------------------------------------------
 
-// start + t (end - start), t the clamped projection parameter; the start for a zero-length one.
-template <class T>
-Vec2<T> closestPoint(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& point);
-
-// The point of the solid disc closest to p: p itself when inside, else the boundary point towards
-// p. Never divides by zero (outside means |p - c| > r >= 0).
-template <class T>
-Vec2<T> closestPoint(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point);
-
-// p clamped to the rectangle on each axis: exact.
-template <class T>
-Vec2<T> closestPoint(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point);
+// Those of the segment, the circle and the rectangle, and the rectangle's containment, are shared
+// with 3D: simdphys/point_tests.hpp.
 
 // p clamped to the rectangle in its local frame; a point inside is returned unchanged (exactly).
 template <class T>

@@ -28,6 +28,7 @@
 
 #include "simdphys/core.hpp"
 #include "simdphys/math.hpp"
+#include "simdphys/primitives.hpp"
 
 namespace simdphys {
 
@@ -40,43 +41,16 @@ inline constexpr T kGeometry2dTolerance = kGeometryTolerance<T>;
 template <class T>
 using Point2T = Vec2<T>;
 
-// The segment from start to end (the book's Line2D); start == end is a point, which queries
-// accept.
+// The segment (the book's Line2D), ray, circle and axis-aligned rectangle are those of
+// primitives.hpp, shared with 3D (RectT::fromOriginSize is the book's Rectangle2D(origin, size)).
 template <class T>
-struct Segment2T {
-  Vec2<T> start, end;
-  Vec2<T> direction() const { return end - start; }
-  T length() const { return direction().norm(); }
-};
-
-// A half-line from origin along a unit direction: t >= 0 gives origin + t direction.
+using Segment2T = SegmentN<T, 2>;
 template <class T>
-struct Ray2T {
-  Vec2<T> origin, direction;
-  Vec2<T> at(T t) const { return origin + t * direction; }
-  // The ray from origin towards target; throws Error if they coincide or are not finite.
-  static Ray2T fromTo(const Vec2<T>& origin, const Vec2<T>& target);
-};
-
+using Ray2T = RayN<T, 2>;
 template <class T>
-struct CircleT {
-  Vec2<T> center;
-  T radius;
-};
-
-// Axis-aligned rectangle as its corners, closed: min == max on an axis is a valid flat rectangle.
+using CircleT = BallN<T, 2>;
 template <class T>
-struct RectT {
-  Vec2<T> min, max;
-  Vec2<T> center() const { return (min + max) / T(2); }
-  Vec2<T> halfExtents() const { return (max - min) / T(2); }
-  Vec2<T> size() const { return max - min; }
-  static RectT fromCenter(const Vec2<T>& c, const Vec2<T>& half) { return {c - half, c + half}; }
-  // The book's Rectangle2D(origin, size): origin is the min corner.
-  static RectT fromOriginSize(const Vec2<T>& origin, const Vec2<T>& size) {
-    return {origin, origin + size};
-  }
-};
+using RectT = BoxN<T, 2>;
 
 // Oriented rectangle: `halfExtents` along its local axes, turned by `rotation` radians
 // counter-clockwise about its center. Its local x axis is (cos, sin), its local y axis
@@ -115,27 +89,17 @@ using Circled = CircleT<double>;
 using Rectd = RectT<double>;
 using OrientedRectd = OrientedRectT<double>;
 
-// Converts a primitive to another scalar type (float to the double reference, mostly).
-template <class U, class T>
-Segment2T<U> cast(const Segment2T<T>& s) {
-  return {s.start.template cast<U>(), s.end.template cast<U>()};
-}
-template <class U, class T>
-Ray2T<U> cast(const Ray2T<T>& r) {
-  return {r.origin.template cast<U>(), r.direction.template cast<U>()};
-}
-template <class U, class T>
-CircleT<U> cast(const CircleT<T>& c) {
-  return {c.center.template cast<U>(), U(c.radius)};
-}
-template <class U, class T>
-RectT<U> cast(const RectT<T>& r) {
-  return {r.min.template cast<U>(), r.max.template cast<U>()};
-}
+// Converts a primitive to another scalar type (float to the double reference, mostly; the shared
+// ones in primitives.hpp).
 template <class U, class T>
 OrientedRectT<U> cast(const OrientedRectT<T>& r) {
   return {r.center.template cast<U>(), r.halfExtents.template cast<U>(), U(r.rotation)};
 }
+
+namespace detail {
+template <class T>
+inline constexpr int kPairOrder<OrientedRectT<T>> = 3;  // the pair tests' order (primitives.hpp)
+}  // namespace detail
 
 // The smallest axis-aligned rectangles around the other shapes (exact for the circle; for the
 // oriented rectangle, the extents |axes| * halfExtents, rounded once per product).
@@ -156,21 +120,11 @@ RectT<T> boundingRect(const Segment2T<T>& s) {
 
 // ---- validation ------------------------------------------------------------------------------
 // Each throws Error saying what is wrong and where (compiled for float and double in
-// src/reference/geometry2d/primitives.cpp). Coordinates must be in the supported range (math.hpp).
+// src/reference/geometry2d/primitives.cpp; the shared shapes' in primitives.hpp). Coordinates
+// must be in the supported range (math.hpp).
 
 template <class T>
 void validate(const Vec2<T>& point, std::string_view where);
-template <class T>
-void validate(const Segment2T<T>& s, std::string_view where);
-// direction of unit length (within 64 eps).
-template <class T>
-void validate(const Ray2T<T>& r, std::string_view where);
-// radius finite and >= 0, center +- radius in range.
-template <class T>
-void validate(const CircleT<T>& c, std::string_view where);
-// min <= max on both axes.
-template <class T>
-void validate(const RectT<T>& r, std::string_view where);
 // rotation finite, halfExtents >= 0, center +- |axes| halfExtents in range.
 template <class T>
 void validate(const OrientedRectT<T>& b, std::string_view where);

@@ -17,10 +17,6 @@ class CircleStream : public StreamSet<fields::Circle> {
   void push(const Circle& circle);
   void set(std::size_t i, const Circle& circle);
   Circle operator[](std::size_t i) const { return {{value(0, i), value(1, i)}, value(2, i)}; }
-
-  const Stream<float>& x() const { return field(fields::Circle::x); }
-  const Stream<float>& y() const { return field(fields::Circle::y); }
-  const Stream<float>& r() const { return field(fields::Circle::r); }
 };
 
 // Axis-aligned rectangles as min/max corners, the layout of the exact overlap tests. Padding:
@@ -32,11 +28,6 @@ class RectStream : public StreamSet<fields::Rect> {
   Rect operator[](std::size_t i) const {
     return {{value(0, i), value(1, i)}, {value(2, i), value(3, i)}};
   }
-
-  const Stream<float>& minX() const { return field(fields::Rect::minX); }
-  const Stream<float>& minY() const { return field(fields::Rect::minY); }
-  const Stream<float>& maxX() const { return field(fields::Rect::maxX); }
-  const Stream<float>& maxY() const { return field(fields::Rect::maxY); }
 };
 
 // Oriented rectangles as centre, half extents and rotation, with the rotation's cosine and sine
@@ -51,18 +42,6 @@ class OrientedRectStream : public StreamSet<fields::OrientedRect> {
   OrientedRect operator[](std::size_t i) const {
     return {{value(0, i), value(1, i)}, {value(2, i), value(3, i)}, value(6, i)};
   }
-
-  const Stream<float>& cx() const { return field(fields::OrientedRect::cx); }
-  const Stream<float>& cy() const { return field(fields::OrientedRect::cy); }
-  const Stream<float>& hx() const { return field(fields::OrientedRect::hx); }
-  const Stream<float>& hy() const { return field(fields::OrientedRect::hy); }
-  const Stream<float>& cos() const {
-    return field(fields::OrientedRect::cos);
-  }  // cos(rotation): local x = (cos, sin)
-  const Stream<float>& sin() const {
-    return field(fields::OrientedRect::sin);
-  }  // sin(rotation): local y = (-sin, cos)
-  const Stream<float>& rotation() const { return field(fields::OrientedRect::rotation); }
 
  private:
   static std::array<float, 7> fieldsOf(const OrientedRect& r) {

@@ -74,8 +74,6 @@ namespace simdphys {
 
 namespace detail {
 
-// ---- symmetric order ----
-
 // ---- separating axes ----
 
 // A box relative to the test's reference point: center, half extents, axes (columns).
@@ -104,6 +102,8 @@ std::array<Vec3<T>, 3> relative(const TriangleT<T>& t, const Vec3<T>& origin);
 
 }  // namespace detail
 
+// Each pair is declared in one order; the other order is primitives.hpp's intersects(a, b).
+
 // ---- sphere ---------------------------------------------------------------------------------
 
 // |c1 - c2| <= r1 + r2. Scale |c1 - c2| + r1 + r2.
@@ -114,39 +114,28 @@ bool intersects(const SphereT<T>& a, const SphereT<T>& b);
 // distance + r.
 template <class T>
 bool intersects(const SphereT<T>& sphere, const AabbT<T>& box);
-template <class T>
-bool intersects(const AabbT<T>& box, const SphereT<T>& sphere);
 
 // The same in the box's frame: the distance is that of the local center from its clamp. Scale:
 // |c - center| + r.
 template <class T>
 bool intersects(const SphereT<T>& sphere, const ObbT<T>& box);
-template <class T>
-bool intersects(const ObbT<T>& box, const SphereT<T>& sphere);
 
 // |n.c + d| <= r. Scale |c| + |d| + r.
 template <class T>
 bool intersects(const SphereT<T>& sphere, const PlaneT<T>& plane);
-template <class T>
-bool intersects(const PlaneT<T>& plane, const SphereT<T>& sphere);
 
 // ---- AABB -----------------------------------------------------------------------------------
 
-// Overlap on all three axes, closed and exact (primitives.hpp's overlaps).
-template <class T>
-bool intersects(const AabbT<T>& a, const AabbT<T>& b);
+// Two AABBs: intersects(AabbT, AabbT) of primitives.hpp, overlap on all three axes, closed and
+// exact.
 
 // Box-box SAT relative to the AABB's min corner.
 template <class T>
 bool intersects(const AabbT<T>& a, const ObbT<T>& b);
-template <class T>
-bool intersects(const ObbT<T>& b, const AabbT<T>& a);
 
 // |n.center + d| <= sum of half |n_i|. Scale |center| + |d| + that sum.
 template <class T>
 bool intersects(const AabbT<T>& box, const PlaneT<T>& plane);
-template <class T>
-bool intersects(const PlaneT<T>& plane, const AabbT<T>& box);
 
 // ---- OBB ------------------------------------------------------------------------------------
 
@@ -171,8 +160,6 @@ bool intersects(const ObbT<T>& a, const ObbT<T>& b);
 // |n.center + d| <= sum of half_i |n.axis_i|. Scale |center| + |d| + that sum.
 template <class T>
 bool intersects(const ObbT<T>& box, const PlaneT<T>& plane);
-template <class T>
-bool intersects(const PlaneT<T>& plane, const ObbT<T>& box);
 
 // ---- plane ----------------------------------------------------------------------------------
 
@@ -189,28 +176,20 @@ bool intersects(const PlaneT<T>& a, const PlaneT<T>& b);
 // max(|c - a|, longest edge) + r. A degenerate triangle answers for its longest edge.
 template <class T>
 bool intersects(const TriangleT<T>& triangle, const SphereT<T>& sphere);
-template <class T>
-bool intersects(const SphereT<T>& sphere, const TriangleT<T>& triangle);
 
 // Triangle-box SAT relative to the AABB's min corner.
 template <class T>
 bool intersects(const TriangleT<T>& triangle, const AabbT<T>& box);
-template <class T>
-bool intersects(const AabbT<T>& box, const TriangleT<T>& triangle);
 
 // Triangle-box SAT relative to the OBB's center.
 template <class T>
 bool intersects(const TriangleT<T>& triangle, const ObbT<T>& box);
-template <class T>
-bool intersects(const ObbT<T>& box, const TriangleT<T>& triangle);
 
 // Not all three vertices strictly on one side: min(s) <= 0 <= max(s) for the signed distances s
 // of the vertices, within the tolerance times max |vertex| + |d|. A triangle lying in the plane
 // intersects it.
 template <class T>
 bool intersects(const TriangleT<T>& triangle, const PlaneT<T>& plane);
-template <class T>
-bool intersects(const PlaneT<T>& plane, const TriangleT<T>& triangle);
 
 // Triangle-triangle SAT relative to the first triangle's vertex a, in canonical order.
 template <class T>

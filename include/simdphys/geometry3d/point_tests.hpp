@@ -46,6 +46,7 @@
 #include <limits>
 
 #include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/point_tests.hpp"
 
 namespace simdphys {
 
@@ -58,9 +59,8 @@ namespace simdphys {
 template <class T>
 bool contains(const SphereT<T>& sphere, const detail::NoDeduce<Vec3<T>>& point);
 
-// Closed box, exact: min <= p <= max on every axis (comparisons only, no rounding).
-template <class T>
-bool contains(const AabbT<T>& box, const detail::NoDeduce<Vec3<T>>& point);
+// The box's containment and the closest points of the sphere, the box and the segment are shared
+// with 2D: simdphys/point_tests.hpp.
 
 // Closed oriented box: |axes^T (p - c)| <= halfExtents on every axis, within the tolerance
 // (scale |p - c| + the largest half extent).
@@ -94,15 +94,6 @@ bool contains(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T>>& poi
 
 // ---- closest points -------------------------------------------------------------------------
 
-// The point of the solid ball closest to p: p itself when inside, else the surface point towards
-// p. A zero-radius sphere gives its center. Never divides by zero (outside means |p - c| > r >= 0).
-template <class T>
-Vec3<T> closestPoint(const SphereT<T>& sphere, const detail::NoDeduce<Vec3<T>>& point);
-
-// p clamped to the box on each axis: exact.
-template <class T>
-Vec3<T> closestPoint(const AabbT<T>& box, const detail::NoDeduce<Vec3<T>>& point);
-
 // p clamped to the box in its local frame; a point inside is returned unchanged (exactly).
 template <class T>
 Vec3<T> closestPoint(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point);
@@ -110,11 +101,6 @@ Vec3<T> closestPoint(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point)
 // The orthogonal projection of p onto the plane.
 template <class T>
 Vec3<T> closestPoint(const PlaneT<T>& plane, const detail::NoDeduce<Vec3<T>>& point);
-
-// start + t (end - start) with t the clamped projection parameter; the start for a zero-length
-// segment.
-template <class T>
-Vec3<T> closestPoint(const SegmentT<T>& segment, const detail::NoDeduce<Vec3<T>>& point);
 
 // origin + t direction with t = max(0, (p - origin).direction): points behind the origin give it.
 template <class T>

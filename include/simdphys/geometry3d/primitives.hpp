@@ -12,44 +12,23 @@
 
 #include "simdphys/core.hpp"
 #include "simdphys/math.hpp"
+#include "simdphys/primitives.hpp"
 
 namespace simdphys {
 
 template <class T>
 using PointT = Vec3<T>;
 
-// The segment from start to end (the book's "Line"); start == end is a degenerate segment, a
-// point, which queries accept.
+// The segment (the book's "Line"), ray, sphere and axis-aligned box are those of
+// primitives.hpp, shared with 2D.
 template <class T>
-struct SegmentT {
-  Vec3<T> start, end;
-  Vec3<T> direction() const { return end - start; }
-  T length() const { return direction().norm(); }
-};
-
-// A half-line from origin along a unit direction: t >= 0 gives origin + t direction.
+using SegmentT = SegmentN<T, 3>;
 template <class T>
-struct RayT {
-  Vec3<T> origin, direction;
-  Vec3<T> at(T t) const { return origin + t * direction; }
-  // The ray from origin towards target; throws Error if they coincide.
-  static RayT fromTo(const Vec3<T>& origin, const Vec3<T>& target);
-};
-
+using RayT = RayN<T, 3>;
 template <class T>
-struct SphereT {
-  Vec3<T> center;
-  T radius;
-};
-
-// Axis-aligned box, closed: a box whose min equals its max on an axis is a valid flat box.
+using SphereT = BallN<T, 3>;
 template <class T>
-struct AabbT {
-  Vec3<T> min, max;
-  Vec3<T> center() const { return (min + max) / T(2); }
-  Vec3<T> halfExtents() const { return (max - min) / T(2); }
-  static AabbT fromCenter(const Vec3<T>& c, const Vec3<T>& half) { return {c - half, c + half}; }
-};
+using AabbT = BoxN<T, 3>;
 
 // Oriented box: the columns of `axes` are its local x, y, z axes (orthonormal, right-handed);
 // a point p is inside when |axes^T (p - center)| <= halfExtents on every axis.
@@ -93,15 +72,8 @@ using Obbd = ObbT<double>;
 using Planed = PlaneT<double>;
 using Triangled = TriangleT<double>;
 
-// Converts a primitive to another scalar type (float to the double reference, mostly).
-template <class U, class T>
-SphereT<U> cast(const SphereT<T>& s) {
-  return {s.center.template cast<U>(), U(s.radius)};
-}
-template <class U, class T>
-AabbT<U> cast(const AabbT<T>& b) {
-  return {b.min.template cast<U>(), b.max.template cast<U>()};
-}
+// Converts a primitive to another scalar type (float to the double reference, mostly; the shared
+// ones in primitives.hpp).
 template <class U, class T>
 ObbT<U> cast(const ObbT<T>& b) {
   return {b.center.template cast<U>(), b.halfExtents.template cast<U>(), b.axes.template cast<U>()};
@@ -114,30 +86,20 @@ template <class U, class T>
 TriangleT<U> cast(const TriangleT<T>& t) {
   return {t.a.template cast<U>(), t.b.template cast<U>(), t.c.template cast<U>()};
 }
-template <class U, class T>
-SegmentT<U> cast(const SegmentT<T>& s) {
-  return {s.start.template cast<U>(), s.end.template cast<U>()};
-}
-template <class U, class T>
-RayT<U> cast(const RayT<T>& r) {
-  return {r.origin.template cast<U>(), r.direction.template cast<U>()};
-}
+
+namespace detail {
+template <class T>
+inline constexpr int kPairOrder<TriangleT<T>> = 0;  // the pair tests' order (primitives.hpp)
+template <class T>
+inline constexpr int kPairOrder<ObbT<T>> = 3;
+template <class T>
+inline constexpr int kPairOrder<PlaneT<T>> = 4;
+}  // namespace detail
 
 // ---- validation ------------------------------------------------------------------------------
 // Each throws Error saying what is wrong and where (compiled for float and double in
-// src/reference/geometry3d/primitives.cpp).
+// src/reference/geometry3d/primitives.cpp; the shared shapes' in primitives.hpp).
 
-// min <= max on every axis.
-template <class T>
-void validate(const AabbT<T>& box, std::string_view where);
-// radius finite and >= 0, center +- radius in range.
-template <class T>
-void validate(const SphereT<T>& sphere, std::string_view where);
-template <class T>
-void validate(const SegmentT<T>& s, std::string_view where);
-// direction of unit length (within 64 eps).
-template <class T>
-void validate(const RayT<T>& r, std::string_view where);
 // normal of unit length (within 64 eps).
 template <class T>
 void validate(const PlaneT<T>& p, std::string_view where);
@@ -146,11 +108,5 @@ template <class T>
 void validate(const ObbT<T>& b, std::string_view where);
 template <class T>
 void validate(const TriangleT<T>& t, std::string_view where);
-
-// Closed overlap of two boxes: boxes that only touch overlap.
-template <class T>
-bool overlaps(const AabbT<T>& a, const AabbT<T>& b) {
-  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
-}
 
 }  // namespace simdphys

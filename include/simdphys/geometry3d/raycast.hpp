@@ -44,6 +44,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -139,6 +140,12 @@ bool isPointSegment(const SegmentT<T>& s) {
   return !(s.direction().squaredNorm() >= std::numeric_limits<T>::min());
 }
 
+// The solids (sphere, AABB, OBB): their raycasts, linecasts and linetests are one function each,
+// over the hit test of the kind.
+template <class S, class T>
+concept Solid =
+    std::same_as<S, SphereT<T>> || std::same_as<S, AabbT<T>> || std::same_as<S, ObbT<T>>;
+
 }  // namespace detail::rays
 
 // ---- the watertight triangle test ------------------------------------------------------------
@@ -180,17 +187,10 @@ std::optional<TriangleHitT<T>> intersectTriangle(
 
 // ---- raycasts --------------------------------------------------------------------------------
 
-template <class T>
-std::optional<RayHitT<T>> raycast(const SphereT<T>& sphere, const RayT<T>& ray,
-                                  detail::NoDeduce<T> tMax = detail::rays::kInfinity<T>);
-
-template <class T>
-std::optional<RayHitT<T>> raycast(const AabbT<T>& box, const RayT<T>& ray,
-                                  detail::NoDeduce<T> tMax = detail::rays::kInfinity<T>);
-
-template <class T>
-std::optional<RayHitT<T>> raycast(const ObbT<T>& box, const RayT<T>& ray,
-                                  detail::NoDeduce<T> tMax = detail::rays::kInfinity<T>);
+// A solid: sphere, AABB or OBB.
+template <class S, class T>
+requires detail::rays::Solid<S, T> std::optional<RayHitT<T>> raycast(
+    const S& solid, const RayT<T>& ray, detail::NoDeduce<T> tMax = detail::rays::kInfinity<T>);
 
 template <class T>
 std::optional<RayHitT<T>> raycast(const PlaneT<T>& plane, const RayT<T>& ray,
@@ -207,14 +207,9 @@ std::optional<RayHitT<T>> raycast(const TriangleT<T>& tri, const RayT<T>& ray,
 
 // ---- linecasts -------------------------------------------------------------------------------
 
-template <class T>
-std::optional<RayHitT<T>> linecast(const SphereT<T>& sphere, const SegmentT<T>& s);
-
-template <class T>
-std::optional<RayHitT<T>> linecast(const AabbT<T>& box, const SegmentT<T>& s);
-
-template <class T>
-std::optional<RayHitT<T>> linecast(const ObbT<T>& box, const SegmentT<T>& s);
+template <class S, class T>
+requires detail::rays::Solid<S, T> std::optional<RayHitT<T>> linecast(const S& solid,
+                                                                      const SegmentT<T>& s);
 
 // The crossing comes from the signed distances of the two ends, so that it lies in [0, length]
 // exactly when they have opposite signs or one is zero (and differ).
@@ -226,14 +221,10 @@ std::optional<RayHitT<T>> linecast(const TriangleT<T>& tri, const SegmentT<T>& s
 
 // ---- linetests -------------------------------------------------------------------------------
 
-template <class T>
-bool linetest(const SphereT<T>& sphere, const SegmentT<T>& s);
-
-template <class T>
-bool linetest(const AabbT<T>& box, const SegmentT<T>& s);
-
-template <class T>
-bool linetest(const ObbT<T>& box, const SegmentT<T>& s);
+// A solid: the segment starts in it or its linecast hits.
+template <class S, class T>
+requires detail::rays::Solid<S, T>
+bool linetest(const S& solid, const SegmentT<T>& s);
 
 // The ends' signed distances have opposite signs or one is zero; a segment in the plane touches it.
 template <class T>

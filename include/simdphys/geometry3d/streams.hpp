@@ -43,7 +43,8 @@ class StreamSet {
 
   std::size_t size() const { return fields_[0].size(); }
   std::size_t padded() const { return fields_[0].padded(); }
-  // Field f (a name of the layout: fields::Box::minX, ...), with its padding.
+  // Field f (a name of the layout: boxes.field(fields::Box::minX), ...), with its padding: the
+  // one way to read a field, so a layout's names are written only in stream_fields.hpp.
   const Stream<float>& field(std::size_t f) const { return fields_[f]; }
   void reserve(std::size_t n) {
     for (Stream<float>& f : fields_) f.reserve(n);
@@ -113,13 +114,6 @@ class BoxStream : public StreamSet<fields::Box> {
   void push(const Aabb& box);
   void set(std::size_t i, const Aabb& box);
   Aabb operator[](std::size_t i) const;
-
-  const Stream<float>& minX() const { return field(fields::Box::minX); }
-  const Stream<float>& minY() const { return field(fields::Box::minY); }
-  const Stream<float>& minZ() const { return field(fields::Box::minZ); }
-  const Stream<float>& maxX() const { return field(fields::Box::maxX); }
-  const Stream<float>& maxY() const { return field(fields::Box::maxY); }
-  const Stream<float>& maxZ() const { return field(fields::Box::maxZ); }
 };
 
 // Spheres as centre and radius. Padding: radius -inf, which every test fails.
@@ -128,11 +122,6 @@ class SphereStream : public StreamSet<fields::Sphere> {
   void push(const Sphere& sphere);
   void set(std::size_t i, const Sphere& sphere);
   Sphere operator[](std::size_t i) const;
-
-  const Stream<float>& x() const { return field(fields::Sphere::x); }
-  const Stream<float>& y() const { return field(fields::Sphere::y); }
-  const Stream<float>& z() const { return field(fields::Sphere::z); }
-  const Stream<float>& r() const { return field(fields::Sphere::r); }
 };
 
 // Boxes as centre and half extents, the layout of culling (n.c + d + |n|.h needs no
@@ -143,13 +132,6 @@ class BoundsStream : public StreamSet<fields::Bounds> {
  public:
   void push(const Vec3f& center, const Vec3f& halfExtents);
   Aabb operator[](std::size_t i) const;  // as min/max, for single queries
-
-  const Stream<float>& cx() const { return field(fields::Bounds::cx); }
-  const Stream<float>& cy() const { return field(fields::Bounds::cy); }
-  const Stream<float>& cz() const { return field(fields::Bounds::cz); }
-  const Stream<float>& ex() const { return field(fields::Bounds::ex); }
-  const Stream<float>& ey() const { return field(fields::Bounds::ey); }
-  const Stream<float>& ez() const { return field(fields::Bounds::ez); }
 };
 
 // Triangles as the SoA of their vertices (a triangle soup). Degenerate triangles (collinear
@@ -200,9 +182,6 @@ class PointStream : public StreamSet<fields::Point> {
   void overwrite(std::size_t n, Writer write) {
     StreamSet::overwrite(n, [&](const std::array<float*, 3>& p) { write(p[0], p[1], p[2]); });
   }
-  const Stream<float>& x() const { return field(fields::Point::x); }
-  const Stream<float>& y() const { return field(fields::Point::y); }
-  const Stream<float>& z() const { return field(fields::Point::z); }
 };
 
 }  // namespace simdphys

@@ -236,11 +236,6 @@ bool intersects(const CircleT<T>& c, const RectT<T>& r) {
 }
 
 template <class T>
-bool intersects(const RectT<T>& r, const CircleT<T>& c) {
-  return intersects(c, r);
-}
-
-template <class T>
 bool intersects(const CircleT<T>& c, const OrientedRectT<T>& b) {
   const detail::g2::CircleInBox<T> f = detail::g2::circleInBox(c, b);
   const Vec2<T> q = f.local.cwiseMax(-b.halfExtents).cwiseMin(b.halfExtents);
@@ -250,28 +245,8 @@ bool intersects(const CircleT<T>& c, const OrientedRectT<T>& b) {
 }
 
 template <class T>
-bool intersects(const OrientedRectT<T>& b, const CircleT<T>& c) {
-  return intersects(c, b);
-}
-
-template <class T>
-bool intersects(const RectT<T>& a, const RectT<T>& b) {
-  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
-}
-
-template <class T>
-bool overlaps(const RectT<T>& a, const RectT<T>& b) {
-  return intersects(a, b);
-}
-
-template <class T>
 bool intersects(const RectT<T>& r, const OrientedRectT<T>& b) {
   return detail::g2::boxesIntersect(detail::g2::boxOf(r, b.center), detail::g2::boxOf(b, b.center));
-}
-
-template <class T>
-bool intersects(const OrientedRectT<T>& b, const RectT<T>& r) {
-  return intersects(r, b);
 }
 
 template <class T>
@@ -306,11 +281,6 @@ Manifold2T<T> collide(const CircleT<T>& c, const RectT<T>& r) {
 }
 
 template <class T>
-Manifold2T<T> collide(const RectT<T>& r, const CircleT<T>& c) {
-  return flipped(collide(c, r));
-}
-
-template <class T>
 Manifold2T<T> collide(const CircleT<T>& c, const OrientedRectT<T>& b) {
   if (!intersects(c, b)) return {};
   const detail::g2::CircleInBox<T> f = detail::g2::circleInBox(c, b);
@@ -319,11 +289,6 @@ Manifold2T<T> collide(const CircleT<T>& c, const OrientedRectT<T>& b) {
   m.normal = f.axes * m.normal;
   m.contacts[0] = c.center + f.axes * m.contacts[0];
   return m;
-}
-
-template <class T>
-Manifold2T<T> collide(const OrientedRectT<T>& b, const CircleT<T>& c) {
-  return flipped(collide(c, b));
 }
 
 template <class T>
@@ -360,11 +325,6 @@ template <class T>
 Manifold2T<T> collide(const RectT<T>& r, const OrientedRectT<T>& b) {
   return detail::g2::collideBoxes(detail::g2::boxOf(r, b.center), detail::g2::boxOf(b, b.center),
                                   b.center);
-}
-
-template <class T>
-Manifold2T<T> collide(const OrientedRectT<T>& b, const RectT<T>& r) {
-  return flipped(collide(r, b));
 }
 
 template <class T>

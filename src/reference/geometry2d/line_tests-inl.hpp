@@ -64,14 +64,9 @@ RayHit2T<T> insideHit(const Ray2T<T>& ray) {
 template <class T>
 bool intersects(const Segment2T<T>& s, const CircleT<T>& c) {
   const Vec2<T> d = s.end - s.start, r = c.center - s.start;
-  const T t = detail::g2::segmentParameter(d, r);
+  const T t = detail::segmentParameter(d, r);
   const T distance = (r - t * d).norm();
   return distance <= c.radius + kGeometry2dTolerance<T> * std::max({c.radius, r.norm(), d.norm()});
-}
-
-template <class T>
-bool intersects(const CircleT<T>& c, const Segment2T<T>& s) {
-  return intersects(s, c);
 }
 
 template <class T>
@@ -82,22 +77,12 @@ bool intersects(const Segment2T<T>& s, const RectT<T>& r) {
 }
 
 template <class T>
-bool intersects(const RectT<T>& r, const Segment2T<T>& s) {
-  return intersects(s, r);
-}
-
-template <class T>
 bool intersects(const Segment2T<T>& s, const OrientedRectT<T>& b) {
   const Mat2<T> axes = b.axes();
   const Vec2<T> start = axes.transpose() * (s.start - b.center);
   const Vec2<T> d = axes.transpose() * (s.end - s.start);
   const Vec2<T> lo = -b.halfExtents - start, hi = b.halfExtents - start;
   return detail::g2::slabs<T>(d, lo, hi, detail::g2::slabSlack(lo, hi), T(1)).has_value();
-}
-
-template <class T>
-bool intersects(const OrientedRectT<T>& b, const Segment2T<T>& s) {
-  return intersects(s, b);
 }
 
 template <class T>

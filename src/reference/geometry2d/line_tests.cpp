@@ -5,9 +5,9 @@
 namespace simdphys {
 
 #define SIMDPHYS_INSTANTIATE_GEOMETRY2D_LINE_TESTS(T)                                        \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, Segment2T, CircleT)                  \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, Segment2T, RectT)                    \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, Segment2T, OrientedRectT)            \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, Segment2T, CircleT)                         \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, Segment2T, RectT)                           \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, Segment2T, OrientedRectT)                   \
   template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const CircleT<T>& shape); \
   template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const RectT<T>& shape);   \
   template std::optional<RayHit2T<T>> raycast(const Ray2T<T>& ray, const OrientedRectT<T>& shape);

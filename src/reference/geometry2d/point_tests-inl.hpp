@@ -4,19 +4,11 @@
 #pragma once
 
 #include "simdphys/geometry2d/point_tests.hpp"
+#include "src/reference/point_tests-inl.hpp"
 
 namespace simdphys {
 
 namespace detail::g2 {
-
-// The parameter in [0, 1] of the point of the segment from 0 to d closest to r (both relative to
-// the segment's start); 0 for a zero-length segment.
-template <class T>
-T segmentParameter(const Vec2<T>& d, const Vec2<T>& r) {
-  const T dd = d.squaredNorm();
-  if (!(dd > 0)) return T(0);
-  return std::clamp(r.dot(d) / dd, T(0), T(1));
-}
 
 // p in the local frame of an oriented rectangle: axes^T (p - center).
 template <class T>
@@ -30,7 +22,7 @@ template <class T>
 bool contains(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& point) {
   const Vec2<T> d = segment.end - segment.start;
   const Vec2<T> r = point - segment.start;
-  const T t = detail::g2::segmentParameter(d, r);
+  const T t = detail::segmentParameter(d, r);
   return (r - t * d).norm() <= kGeometry2dTolerance<T> * std::max(r.norm(), d.norm());
 }
 
@@ -41,35 +33,11 @@ bool contains(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point) 
 }
 
 template <class T>
-bool contains(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point) {
-  return (rect.min.array() <= point.array()).all() && (point.array() <= rect.max.array()).all();
-}
-
-template <class T>
 bool contains(const OrientedRectT<T>& box, const detail::NoDeduce<Vec2<T>>& point) {
   const Vec2<T> offset = point - box.center;
   const Vec2<T> local = box.axes().transpose() * offset;
   const T excess = (local.cwiseAbs() - box.halfExtents).maxCoeff();
   return excess <= kGeometry2dTolerance<T> * (offset.norm() + box.halfExtents.maxCoeff());
-}
-
-template <class T>
-Vec2<T> closestPoint(const Segment2T<T>& segment, const detail::NoDeduce<Vec2<T>>& point) {
-  const Vec2<T> d = segment.end - segment.start;
-  return segment.start + detail::g2::segmentParameter<T>(d, point - segment.start) * d;
-}
-
-template <class T>
-Vec2<T> closestPoint(const CircleT<T>& circle, const detail::NoDeduce<Vec2<T>>& point) {
-  const Vec2<T> offset = point - circle.center;
-  const T distance = offset.norm();
-  if (distance <= circle.radius) return point;
-  return circle.center + offset * (circle.radius / distance);
-}
-
-template <class T>
-Vec2<T> closestPoint(const RectT<T>& rect, const detail::NoDeduce<Vec2<T>>& point) {
-  return point.cwiseMax(rect.min).cwiseMin(rect.max);
 }
 
 template <class T>

@@ -215,11 +215,6 @@ bool intersects(const SphereT<T>& sphere, const AabbT<T>& box) {
 }
 
 template <class T>
-bool intersects(const AabbT<T>& box, const SphereT<T>& sphere) {
-  return intersects(sphere, box);
-}
-
-template <class T>
 bool intersects(const SphereT<T>& sphere, const ObbT<T>& box) {
   const Vec3<T> offset = sphere.center - box.center;
   const Vec3<T> local = box.axes.transpose() * offset;
@@ -229,24 +224,9 @@ bool intersects(const SphereT<T>& sphere, const ObbT<T>& box) {
 }
 
 template <class T>
-bool intersects(const ObbT<T>& box, const SphereT<T>& sphere) {
-  return intersects(sphere, box);
-}
-
-template <class T>
 bool intersects(const SphereT<T>& sphere, const PlaneT<T>& plane) {
   return detail::withinPlaneReach(plane.signedDistance(sphere.center), sphere.radius,
                                   sphere.center.norm() + std::abs(plane.d) + sphere.radius);
-}
-
-template <class T>
-bool intersects(const PlaneT<T>& plane, const SphereT<T>& sphere) {
-  return intersects(sphere, plane);
-}
-
-template <class T>
-bool intersects(const AabbT<T>& a, const AabbT<T>& b) {
-  return overlaps(a, b);
 }
 
 template <class T>
@@ -256,21 +236,11 @@ bool intersects(const AabbT<T>& a, const ObbT<T>& b) {
 }
 
 template <class T>
-bool intersects(const ObbT<T>& b, const AabbT<T>& a) {
-  return intersects(a, b);
-}
-
-template <class T>
 bool intersects(const AabbT<T>& box, const PlaneT<T>& plane) {
   const Vec3<T> center = box.center(), half = box.halfExtents();
   const T reach = half.dot(plane.normal.cwiseAbs());
   return detail::withinPlaneReach(plane.signedDistance(center), reach,
                                   center.norm() + std::abs(plane.d) + reach);
-}
-
-template <class T>
-bool intersects(const PlaneT<T>& plane, const AabbT<T>& box) {
-  return intersects(box, plane);
 }
 
 template <class T>
@@ -285,11 +255,6 @@ bool intersects(const ObbT<T>& box, const PlaneT<T>& plane) {
   const T reach = box.halfExtents.dot((box.axes.transpose() * plane.normal).cwiseAbs());
   return detail::withinPlaneReach(plane.signedDistance(box.center), reach,
                                   box.center.norm() + std::abs(plane.d) + reach);
-}
-
-template <class T>
-bool intersects(const PlaneT<T>& plane, const ObbT<T>& box) {
-  return intersects(box, plane);
 }
 
 template <class T>
@@ -311,18 +276,8 @@ bool intersects(const TriangleT<T>& triangle, const SphereT<T>& sphere) {
 }
 
 template <class T>
-bool intersects(const SphereT<T>& sphere, const TriangleT<T>& triangle) {
-  return intersects(triangle, sphere);
-}
-
-template <class T>
 bool intersects(const TriangleT<T>& triangle, const AabbT<T>& box) {
   return detail::triangleBoxIntersect(detail::relative(triangle, box.min), detail::boxFromMin(box));
-}
-
-template <class T>
-bool intersects(const AabbT<T>& box, const TriangleT<T>& triangle) {
-  return intersects(triangle, box);
 }
 
 template <class T>
@@ -333,11 +288,6 @@ bool intersects(const TriangleT<T>& triangle, const ObbT<T>& box) {
 }
 
 template <class T>
-bool intersects(const ObbT<T>& box, const TriangleT<T>& triangle) {
-  return intersects(triangle, box);
-}
-
-template <class T>
 bool intersects(const TriangleT<T>& triangle, const PlaneT<T>& plane) {
   const T sa = plane.signedDistance(triangle.a), sb = plane.signedDistance(triangle.b),
           sc = plane.signedDistance(triangle.c);
@@ -345,11 +295,6 @@ bool intersects(const TriangleT<T>& triangle, const PlaneT<T>& plane) {
       std::max({triangle.a.norm(), triangle.b.norm(), triangle.c.norm()}) + std::abs(plane.d);
   const T tolerance = kGeometryTolerance<T> * scale;
   return std::min({sa, sb, sc}) <= tolerance && std::max({sa, sb, sc}) >= -tolerance;
-}
-
-template <class T>
-bool intersects(const PlaneT<T>& plane, const TriangleT<T>& triangle) {
-  return intersects(triangle, plane);
 }
 
 template <class T>

@@ -16,21 +16,20 @@ SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT_DETAIL(double)
 
 namespace simdphys {
 
-#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(T)                        \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, AabbT)     \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, ObbT)      \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, PlaneT)    \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, SphereT, TriangleT) \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, AabbT, ObbT)        \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, AabbT, PlaneT)      \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, AabbT, TriangleT)   \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, ObbT, PlaneT)       \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, ObbT, TriangleT)    \
-  SIMDPHYS_INSTANTIATE_BOTH_ORDERS(T, bool, intersects, PlaneT, TriangleT)  \
-  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, SphereT)              \
-  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, AabbT)                \
-  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, ObbT)                 \
-  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, PlaneT)               \
+#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(T)                 \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, SphereT, AabbT)     \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, SphereT, ObbT)      \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, SphereT, PlaneT)    \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, TriangleT, SphereT) \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, AabbT, ObbT)        \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, AabbT, PlaneT)      \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, TriangleT, AabbT)   \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, ObbT, PlaneT)       \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, TriangleT, ObbT)    \
+  SIMDPHYS_INSTANTIATE_PAIR(T, bool, intersects, TriangleT, PlaneT)  \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, SphereT)       \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, ObbT)          \
+  SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, PlaneT)        \
   SIMDPHYS_INSTANTIATE_SAME_KIND(T, bool, intersects, TriangleT)
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(float)
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_INTERSECT(double)

@@ -5,19 +5,11 @@
 
 #include "simdphys/geometry3d/point_tests.hpp"
 #include "src/reference/math-inl.hpp"
+#include "src/reference/point_tests-inl.hpp"
 
 namespace simdphys {
 
 namespace detail {
-
-// The parameter in [0, 1] of the point of the segment from 0 to `d` closest to `r` (both relative
-// to the segment's start); 0 for a zero-length segment (no division by zero).
-template <class T>
-T segmentParameter(const Vec3<T>& d, const Vec3<T>& r) {
-  const T dd = d.squaredNorm();
-  if (!(dd > 0)) return T(0);
-  return std::clamp(r.dot(d) / dd, T(0), T(1));
-}
 
 // num / den clamped to [0, 1], and 0 when den is not positive (num >= 0 is known by the caller).
 template <class T>
@@ -171,11 +163,6 @@ bool contains(const SphereT<T>& sphere, const detail::NoDeduce<Vec3<T>>& point) 
 }
 
 template <class T>
-bool contains(const AabbT<T>& box, const detail::NoDeduce<Vec3<T>>& point) {
-  return (box.min.array() <= point.array()).all() && (point.array() <= box.max.array()).all();
-}
-
-template <class T>
 bool contains(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point) {
   const Vec3<T> offset = point - box.center;
   const Vec3<T> local = box.axes.transpose() * offset;
@@ -214,19 +201,6 @@ bool contains(const TriangleT<T>& triangle, const detail::NoDeduce<Vec3<T>>& poi
 }
 
 template <class T>
-Vec3<T> closestPoint(const SphereT<T>& sphere, const detail::NoDeduce<Vec3<T>>& point) {
-  const Vec3<T> offset = point - sphere.center;
-  const T distance = offset.norm();
-  if (distance <= sphere.radius) return point;
-  return sphere.center + offset * (sphere.radius / distance);
-}
-
-template <class T>
-Vec3<T> closestPoint(const AabbT<T>& box, const detail::NoDeduce<Vec3<T>>& point) {
-  return point.cwiseMax(box.min).cwiseMin(box.max);
-}
-
-template <class T>
 Vec3<T> closestPoint(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point) {
   const Vec3<T> local = box.axes.transpose() * (point - box.center);
   const Vec3<T> clamped = local.cwiseMax(-box.halfExtents).cwiseMin(box.halfExtents);
@@ -237,12 +211,6 @@ Vec3<T> closestPoint(const ObbT<T>& box, const detail::NoDeduce<Vec3<T>>& point)
 template <class T>
 Vec3<T> closestPoint(const PlaneT<T>& plane, const detail::NoDeduce<Vec3<T>>& point) {
   return point - plane.normal * plane.signedDistance(point);
-}
-
-template <class T>
-Vec3<T> closestPoint(const SegmentT<T>& segment, const detail::NoDeduce<Vec3<T>>& point) {
-  const Vec3<T> d = segment.end - segment.start;
-  return segment.start + detail::segmentParameter<T>(d, point - segment.start) * d;
 }
 
 template <class T>

@@ -1,36 +1,11 @@
-// geometry3d/primitives.hpp, compiled once: validate and the named constructors for float and
-// double.
+// geometry3d/primitives.hpp, compiled once: validate and the named constructor for float and
+// double (the shared shapes' in src/reference/primitives.cpp).
 #include "simdphys/geometry3d/primitives.hpp"
 
 #include "src/reference/math-inl.hpp"
 #include "src/reference/validate-inl.hpp"
 
 namespace simdphys {
-
-template <class T>
-void validate(const AabbT<T>& box, std::string_view where) {
-  detail::requireFiniteField(box.min, where, "min");
-  detail::requireFiniteField(box.max, where, "max");
-  detail::requireOrdered(box.min, box.max, where);
-}
-
-template <class T>
-void validate(const SphereT<T>& sphere, std::string_view where) {
-  detail::requireBall(sphere.center, sphere.radius, where);
-}
-
-template <class T>
-void validate(const SegmentT<T>& s, std::string_view where) {
-  detail::requireFiniteField(s.start, where, "start");
-  detail::requireFiniteField(s.end, where, "end");
-}
-
-template <class T>
-void validate(const RayT<T>& r, std::string_view where) {
-  detail::requireFiniteField(r.origin, where, "origin");
-  detail::requireFiniteField(r.direction, where, "direction");
-  detail::requireUnit(r.direction, where, "direction");
-}
 
 template <class T>
 void validate(const PlaneT<T>& p, std::string_view where) {
@@ -64,17 +39,8 @@ void validate(const TriangleT<T>& t, std::string_view where) {
   detail::requireFiniteField(t.c, where, "c");
 }
 
-// Both accept any finite non-zero offset or normal (unitOr scales it before taking its length)
-// and check that the points are in the supported range and the plane passes within it.
-template <class T>
-RayT<T> RayT<T>::fromTo(const Vec3<T>& origin, const Vec3<T>& target) {
-  detail::requireFiniteField(origin, "Ray::fromTo", "origin");
-  detail::requireFiniteField(target, "Ray::fromTo", "target");
-  const Vec3<T> d = target - origin;
-  if ((d.array() == 0).all()) throw Error("Ray::fromTo: origin and target coincide");
-  return {origin, detail::unitOr(d, Vec3<T>::Zero().eval())};
-}
-
+// Accepts any finite non-zero normal (unitOr scales it before taking its length) and checks that
+// the point is in the supported range and the plane passes within it.
 template <class T>
 PlaneT<T> PlaneT<T>::fromPointNormal(const Vec3<T>& point, const Vec3<T>& normal) {
   detail::requireFiniteField(point, "Plane::fromPointNormal", "point");
@@ -86,15 +52,10 @@ PlaneT<T> PlaneT<T>::fromPointNormal(const Vec3<T>& point, const Vec3<T>& normal
   return plane;
 }
 
-#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_PRIMITIVES(T)                             \
-  template void validate(const AabbT<T>& box, std::string_view where);            \
-  template void validate(const SphereT<T>& sphere, std::string_view where);       \
-  template void validate(const SegmentT<T>& s, std::string_view where);           \
-  template void validate(const RayT<T>& r, std::string_view where);               \
-  template void validate(const PlaneT<T>& p, std::string_view where);             \
-  template void validate(const ObbT<T>& b, std::string_view where);               \
-  template void validate(const TriangleT<T>& t, std::string_view where);          \
-  template RayT<T> RayT<T>::fromTo(const Vec3<T>& origin, const Vec3<T>& target); \
+#define SIMDPHYS_INSTANTIATE_GEOMETRY3D_PRIMITIVES(T)                    \
+  template void validate(const PlaneT<T>& p, std::string_view where);    \
+  template void validate(const ObbT<T>& b, std::string_view where);      \
+  template void validate(const TriangleT<T>& t, std::string_view where); \
   template PlaneT<T> PlaneT<T>::fromPointNormal(const Vec3<T>& point, const Vec3<T>& normal);
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_PRIMITIVES(float)
 SIMDPHYS_INSTANTIATE_GEOMETRY3D_PRIMITIVES(double)

@@ -206,22 +206,26 @@ std::optional<RayHitT<T>> alongSegment(const SegmentT<T>& s, F&& hit) {
 
 }  // namespace detail::rays
 
-template <class T>
-std::optional<RayHitT<T>> raycast(const SphereT<T>& sphere, const RayT<T>& ray,
-                                  detail::NoDeduce<T> tMax) {
-  return detail::rays::hitSphere(sphere, ray.origin, ray.direction, tMax);
+namespace detail::rays {
+
+// The line o + t d, t in [0, tMax], against a solid: the hit test of its kind.
+template <class S, class T>
+std::optional<RayHitT<T>> hitSolid(const S& solid, const Vec3<T>& o, const Vec3<T>& d, T tMax) {
+  if constexpr (std::is_same_v<S, SphereT<T>>)
+    return hitSphere(solid, o, d, tMax);
+  else if constexpr (std::is_same_v<S, AabbT<T>>)
+    return hitAabb(solid.min, solid.max, o, d, tMax);
+  else
+    return hitObb(solid, o, d, tMax);
 }
 
-template <class T>
-std::optional<RayHitT<T>> raycast(const AabbT<T>& box, const RayT<T>& ray,
-                                  detail::NoDeduce<T> tMax) {
-  return detail::rays::hitAabb(box.min, box.max, ray.origin, ray.direction, tMax);
-}
+}  // namespace detail::rays
 
-template <class T>
-std::optional<RayHitT<T>> raycast(const ObbT<T>& box, const RayT<T>& ray,
-                                  detail::NoDeduce<T> tMax) {
-  return detail::rays::hitObb(box, ray.origin, ray.direction, tMax);
+template <class S, class T>
+requires detail::rays::Solid<S, T> std::optional<RayHitT<T>> raycast(const S& solid,
+                                                                     const RayT<T>& ray,
+                                                                     detail::NoDeduce<T> tMax) {
+  return detail::rays::hitSolid(solid, ray.origin, ray.direction, tMax);
 }
 
 template <class T>
@@ -261,24 +265,12 @@ std::optional<RayHitT<T>> hitTriangle(const TriangleT<T>& tri, const WatertightR
 
 }  // namespace detail::rays
 
-template <class T>
-std::optional<RayHitT<T>> linecast(const SphereT<T>& sphere, const SegmentT<T>& s) {
+template <class S, class T>
+requires detail::rays::Solid<S, T> std::optional<RayHitT<T>> linecast(const S& solid,
+                                                                      const SegmentT<T>& s) {
   return detail::rays::alongSegment(s, [&](const Vec3<T>& o, const Vec3<T>& d) {
-    return detail::rays::hitSphere(sphere, o, d, T(1));
+    return detail::rays::hitSolid(solid, o, d, T(1));
   });
-}
-
-template <class T>
-std::optional<RayHitT<T>> linecast(const AabbT<T>& box, const SegmentT<T>& s) {
-  return detail::rays::alongSegment(s, [&](const Vec3<T>& o, const Vec3<T>& d) {
-    return detail::rays::hitAabb(box.min, box.max, o, d, T(1));
-  });
-}
-
-template <class T>
-std::optional<RayHitT<T>> linecast(const ObbT<T>& box, const SegmentT<T>& s) {
-  return detail::rays::alongSegment(
-      s, [&](const Vec3<T>& o, const Vec3<T>& d) { return detail::rays::hitObb(box, o, d, T(1)); });
 }
 
 template <class T>
@@ -317,26 +309,12 @@ bool inClosed(const ObbT<T>& b, const Vec3<T>& p) {
   return (local.array().abs() <= b.halfExtents.array()).all();
 }
 
-template <class T, class Shape>
-bool linetestSolid(const Shape& shape, const SegmentT<T>& s) {
-  return inClosed(shape, s.start) || linecast(shape, s).has_value();
-}
-
 }  // namespace detail::rays
 
-template <class T>
-bool linetest(const SphereT<T>& sphere, const SegmentT<T>& s) {
-  return detail::rays::linetestSolid(sphere, s);
-}
-
-template <class T>
-bool linetest(const AabbT<T>& box, const SegmentT<T>& s) {
-  return detail::rays::linetestSolid(box, s);
-}
-
-template <class T>
-bool linetest(const ObbT<T>& box, const SegmentT<T>& s) {
-  return detail::rays::linetestSolid(box, s);
+template <class S, class T>
+requires detail::rays::Solid<S, T>
+bool linetest(const S& solid, const SegmentT<T>& s) {
+  return detail::rays::inClosed(solid, s.start) || linecast(solid, s).has_value();
 }
 
 template <class T>
