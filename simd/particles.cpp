@@ -548,6 +548,7 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     v1 = IfThenElse(hit, vn, v1);
     live = hit;
   }
+  pushOut(d, p, rows, active, x1, v1, counts);  // no particle ends a step inside (the reference's)
   x = IfThenElse(active, x1, xIn);
   v = IfThenElse(active, v1, vIn);
   for (int k = 0; k < 3; ++k) {

@@ -312,6 +312,9 @@ void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Ve
     v1 = v0;
     integrate(p.integrator, x1, v1, tau, constant);
   }
+  // A path that ends within rounding of a surface it runs along (its entry computed just past
+  // its end) may end a hair inside: no particle ends a step inside an obstacle.
+  pushOut(obstacles, p.skin, x1, v1, counts);
   x = x1;
   v = v1;
 }
