@@ -1,6 +1,7 @@
 // testing/particles.hpp: a particle system stepped by the double-precision reference.
 #include <cmath>
 
+#include "src/particles/step.hpp"
 #include "testing/particles.hpp"
 
 namespace simdphys::test {
@@ -23,7 +24,6 @@ ParticlesD toDouble(const ParticleSystem& s) {
 
 core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, World& world) {
   world.obstacles().update();
-  const ParticleSettings& s = system.settings();
   const WorldSettings& w = world.settings();
   std::vector<ObstacleShapeT<double>> shapes;
   for (const ObstacleShape& o : world.obstacles().shapes())
@@ -37,17 +37,11 @@ core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, Wor
         o));
   const Obstacles& o = world.obstacles();
   const reference::ObstacleSetT<double> set(shapes, o.tree(), o.bounded(), o.planes());
-  reference::ParticleStep<double> step{s.integrator,
-                                       s.gravity.cast<double>(),
-                                       double(w.timeStep) / w.substeps,
-                                       std::pow(double(s.damping), 1.0 / w.substeps),
-                                       s.drag,
-                                       s.restitution,
-                                       s.friction,
-                                       s.restitutionThreshold,
-                                       s.skin,
-                                       s.maxBounces,
-                                       system.hasForces() || s.drag != 0};
+  // The settings as the float paths take them, with the substep and its damping in double.
+  reference::ParticleStep<double> step =
+      reference::particleStep<double>(detail::stepParams(system, 0, 0));
+  step.dt = double(w.timeStep) / w.substeps;
+  step.damping = std::pow(double(system.settings().damping), 1.0 / w.substeps);
   core::ParticleCounts counts;
   for (int sub = 0; sub < w.substeps; ++sub)
     for (std::size_t i = 0; i < p.x.size(); ++i)

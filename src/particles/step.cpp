@@ -58,6 +58,19 @@ reference::ObstacleSetT<float> obstacleSet(const Obstacles& o) {
   return reference::ObstacleSetT<float>(o.shapes(), o.tree(), o.bounded(), o.planes());
 }
 
+core::ParticleStepParams stepParams(const ParticleSystem& system, float dt, float damping) {
+  const ParticleSettings& s = system.settings();
+  core::ParticleStepParams params{};
+  params.integrator = std::uint32_t(s.integrator);
+  for (int k = 0; k < 3; ++k) params.gravity[k] = s.gravity[k];
+  params.dt = dt, params.damping = damping, params.drag = s.drag;
+  params.restitution = s.restitution, params.friction = s.friction;
+  params.threshold = s.restitutionThreshold, params.skin = s.skin;
+  params.maxBounces = s.maxBounces;
+  params.forces = system.hasForces() || s.drag != 0;
+  return params;
+}
+
 namespace {
 
 // Particles per partition: a multiple of every lane count, large enough that a partition's
@@ -86,15 +99,7 @@ core::ParticleCounts referenceRange(const core::View<F::Particle, float>& v, std
 core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obstacles,
                                    std::span<const core::ObstacleRow> rows, float dt, float damping,
                                    int threads) {
-  const ParticleSettings& s = system.settings();
-  core::ParticleStepParams params{};
-  params.integrator = std::uint32_t(s.integrator);
-  for (int k = 0; k < 3; ++k) params.gravity[k] = s.gravity[k];
-  params.dt = dt, params.damping = damping, params.drag = s.drag;
-  params.restitution = s.restitution, params.friction = s.friction;
-  params.threshold = s.restitutionThreshold, params.skin = s.skin;
-  params.maxBounces = s.maxBounces;
-  params.forces = system.hasForces() || s.drag != 0;
+  const core::ParticleStepParams params = stepParams(system, dt, damping);
 
   const core::View<F::Particle, float> v = ParticleStreams::view(system);
   const reference::ObstacleSetT<float> set = obstacleSet(obstacles);

@@ -24,6 +24,10 @@ bool laneWide(const Obstacles& obstacles);
 // The obstacles as the kernels read them (meshes left out).
 std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles);
 
+// A system's settings as the kernels take them, for one substep of length dt with `damping` the
+// substep's share of the per-step factor.
+core::ParticleStepParams stepParams(const ParticleSystem& system, float dt, float damping);
+
 // One substep of length dt for every particle of the system, with `damping` the substep's share
 // of the per-step factor; what the particles met.
 core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obstacles,

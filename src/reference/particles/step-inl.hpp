@@ -134,23 +134,15 @@ std::optional<Entry<T>> entryOf(const PlaneT<T>& plane, const Vec3<T>& x0, const
   return Entry<T>{f0 / -rate, plane.normal};
 }
 
-template <class T>
-std::optional<Entry<T>> fromHit(const std::optional<RayHitT<T>>& h) {
+// A solid (sphere, AABB, OBB) is entered through its surface; a path starting inside enters
+// nothing.
+template <class S, class T>
+requires detail::rays::Solid<S, T> std::optional<Entry<T>> entryOf(const S& solid,
+                                                                   const Vec3<T>& x0,
+                                                                   const Vec3<T>& d) {
+  const auto h = detail::rays::hitSolid(solid, x0, d, T(1));
   if (!h || h->inside) return std::nullopt;
   return Entry<T>{h->t, h->normal};
-}
-
-template <class T>
-std::optional<Entry<T>> entryOf(const SphereT<T>& s, const Vec3<T>& x0, const Vec3<T>& d) {
-  return fromHit(detail::rays::hitSphere(s, x0, d, T(1)));
-}
-template <class T>
-std::optional<Entry<T>> entryOf(const AabbT<T>& b, const Vec3<T>& x0, const Vec3<T>& d) {
-  return fromHit(detail::rays::hitAabb(b.min, b.max, x0, d, T(1)));
-}
-template <class T>
-std::optional<Entry<T>> entryOf(const ObbT<T>& b, const Vec3<T>& x0, const Vec3<T>& d) {
-  return fromHit(detail::rays::hitObb(b, x0, d, T(1)));
 }
 
 // A mesh's triangles are two-sided: the path meets the first it crosses (ties: the lower id),
