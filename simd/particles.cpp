@@ -271,14 +271,16 @@ HWY_INLINE Vec3L<V> onAxis(D d, V axis, const Vec3L<V> (&columns)[3], MaskOf<D> 
   return IfThenElse(positive, n, Neg(n));
 }
 
-// exitOf(): where a point strictly inside the row's solid leaves it by the shortest way.
+// exitOf(): where a point strictly inside the row's solid leaves it by the shortest way, in the
+// lanes of `live` (e.hit). The exit is worked out only if some lane is inside: most are not.
 template <class D, class V = LaneOf<D>>
-HWY_INLINE Surface<D> exitOf(D d, const Params<D>& p, const Row<D>& row, const Vec3L<V>& x) {
+HWY_INLINE Surface<D> exitOf(D d, const Params<D>& p, const Row<D>& row, MaskOf<D> live,
+                             const Vec3L<V>& x) {
   Surface<D> e;
   switch (row.kind) {
     case core::ObstacleRow::kPlane: {
       const V f = dot(row.a, x) + row.w;
-      e.hit = Lt(f, p.zero);
+      e.hit = And(live, Lt(f, p.zero));
       e.point = x - row.a * f;
       e.normal = row.a;
       break;
@@ -286,20 +288,23 @@ HWY_INLINE Surface<D> exitOf(D d, const Params<D>& p, const Row<D>& row, const V
     case core::ObstacleRow::kSphere: {
       const Vec3L<V> r = x - row.a;
       const V r2 = dot(r, r);
-      e.hit = Lt(r2, row.w * row.w);
+      e.hit = And(live, Lt(r2, row.w * row.w));
+      if (AllFalse(d, e.hit)) break;
       const Vec3L<V> up{{p.zero, p.one, p.zero}};  // at the very centre: +y, as documented
       e.normal = IfThenElse(Gt(r2, p.zero), r / Sqrt(r2), up);
       e.point = row.a + e.normal * row.w;
       break;
     }
     case core::ObstacleRow::kAabb: {
+      e.hit = live;
+      for (int k = 0; k < 3; ++k)
+        e.hit = And(e.hit, And(Gt(x[k] - row.a[k], p.zero), Gt(row.b[k] - x[k], p.zero)));
+      if (AllFalse(d, e.hit)) break;
       // The face of least depth, ties to the lowest axis and its min face.
       V depth = p.inf, axis = p.zero;
       auto toMax = Lt(p.one, p.zero);
-      e.hit = Not(toMax);
       for (int k = 0; k < 3; ++k) {
         const V below = x[k] - row.a[k], above = row.b[k] - x[k];
-        e.hit = And(e.hit, And(Gt(below, p.zero), Gt(above, p.zero)));
         const auto byBelow = Lt(below, depth);
         depth = IfThenElse(byBelow, below, depth);
         axis = IfThenElse(byBelow, Set(d, float(k)), axis);
@@ -317,13 +322,14 @@ HWY_INLINE Surface<D> exitOf(D d, const Params<D>& p, const Row<D>& row, const V
       break;
     }
     case core::ObstacleRow::kObb: {
-      // The face of least depth h - |q| (ties: the lowest axis), on the side of q's sign.
       const Vec3L<V> q = toLocal(row.axes, x - row.a);
+      e.hit = live;
+      for (int k = 0; k < 3; ++k) e.hit = And(e.hit, Gt(row.b[k] - Abs(q[k]), p.zero));
+      if (AllFalse(d, e.hit)) break;
+      // The face of least depth h - |q| (ties: the lowest axis), on the side of q's sign.
       V depth = p.inf, axis = p.zero, side = p.zero;
-      e.hit = Le(p.zero, p.one);
       for (int k = 0; k < 3; ++k) {
         const V dk = row.b[k] - Abs(q[k]);
-        e.hit = And(e.hit, Gt(dk, p.zero));
         const auto deeper = Lt(dk, depth);
         depth = IfThenElse(deeper, dk, depth);
         axis = IfThenElse(deeper, Set(d, float(k)), axis);
@@ -357,16 +363,17 @@ HWY_INLINE MaskOf<D> slabEntry(D d, const Params<D>& p, const Vec3L<V>& lo, cons
   return And(Le(enter, exit), And(Ge(enter, p.zero), Le(enter, p.one)));
 }
 
-// entryOf(): the first point where the path x0 -> x0 + dir enters the row's solid from outside.
+// entryOf(): the first point where the path x0 -> x0 + dir enters the row's solid from outside,
+// in the lanes of `live` (e.hit). The normal is worked out only if some lane enters.
 template <class D, class V = LaneOf<D>>
-HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, const Vec3L<V>& x0,
-                              const Vec3L<V>& dir) {
+HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, MaskOf<D> live,
+                              const Vec3L<V>& x0, const Vec3L<V>& dir) {
   Surface<D> e;
   switch (row.kind) {
     case core::ObstacleRow::kPlane: {
       const V f0 = dot(row.a, x0) + row.w;
       const V rate = dot(row.a, dir);
-      e.hit = And(Ge(f0, p.zero), Lt(f0 + rate, p.zero));
+      e.hit = And(live, And(Ge(f0, p.zero), Lt(f0 + rate, p.zero)));
       e.s = f0 / Neg(rate);
       e.normal = row.a;
       break;
@@ -386,7 +393,8 @@ HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, const 
       const auto enters = And(outside, And(Gt(b, p.zero), Ge(h2, p.zero)));
       const auto touches = And(Eq(c0, p.zero), Not(Lt(b, p.zero)));
       e.s = IfThenElse(outside, (c0 / dd) / (b + f), p.zero);
-      e.hit = And(Or(enters, touches), Le(e.s, p.one));
+      e.hit = And(live, And(Or(enters, touches), Le(e.s, p.one)));
+      if (AllFalse(d, e.hit)) break;
       // unitOr(outward, -dir / |dir|): divided by the largest |component| (std::max's order),
       // then by its length.
       const Vec3L<V> outward = IfThenElse(outside, Neg(m) - dir * f, Neg(c));
@@ -401,7 +409,8 @@ HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, const 
     }
     case core::ObstacleRow::kAabb: {
       V axis;
-      e.hit = slabEntry(d, p, row.a, row.b, x0, dir, e.s, axis);
+      e.hit = And(live, slabEntry(d, p, row.a, row.b, x0, dir, e.s, axis));
+      if (AllFalse(d, e.hit)) break;
       Vec3L<V> n;
       for (int k = 0; k < 3; ++k) {
         // The face facing the path: -sign(dir) along the axis entered.
@@ -414,7 +423,8 @@ HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, const 
     case core::ObstacleRow::kObb: {
       const Vec3L<V> o = toLocal(row.axes, x0 - row.a), l = toLocal(row.axes, dir);
       V axis;
-      e.hit = slabEntry(d, p, Neg(row.b), row.b, o, l, e.s, axis);
+      e.hit = And(live, slabEntry(d, p, Neg(row.b), row.b, o, l, e.s, axis));
+      if (AllFalse(d, e.hit)) break;
       V la = IfThenElse(Eq(axis, Set(d, 1.0f)), l[1], l[0]);
       la = IfThenElse(Eq(axis, Set(d, 2.0f)), l[2], la);
       e.normal = onAxis(d, axis, row.units, SignBit(d, la));
@@ -432,8 +442,8 @@ HWY_INLINE void pushOut(D d, const Params<D>& p, const Rows<D>& rows, MaskOf<D> 
   PathBox<V> at = pathBox(p, x, x);
   for (const Row<D>& row : rows) {
     if (AllFalse(d, And(live, row.near(at)))) continue;
-    const Surface<D> e = exitOf(d, p, row, x);
-    const auto in = And(e.hit, live);
+    const Surface<D> e = exitOf(d, p, row, live, x);
+    const auto in = e.hit;
     if (AllFalse(d, in)) continue;
     x = IfThenElse(in, e.point + e.normal * p.skin, x);
     at = pathBox(p, x, x);
@@ -510,7 +520,7 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     Vec3L<V> normal{{p.zero, p.zero, p.zero}};
     for (const Row<D>& row : rows) {
       if (AllFalse(d, And(live, row.near(path)))) continue;
-      const Surface<D> e = entryOf(d, p, row, x0, dir);
+      const Surface<D> e = entryOf(d, p, row, live, x0, dir);
       const auto better = And(e.hit, Or(Not(found), Lt(e.s, first)));
       first = IfThenElse(better, e.s, first);
       normal = IfThenElse(better, e.normal, normal);
