@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 namespace simdphys::core {
 
@@ -31,6 +32,20 @@ struct ObstacleRow {
   // (3..5). kObb: centre (0..2), half extents (3..5), axes (6..14), column c (the box's local
   // axis c) at 6 + 3 c, as ObbT::axes.col(c).
   float v[15];
+  // A world box around the solid (infinite for a plane), grown by a margin far above the rounding
+  // of the exact tests (a thousandth of the solid's size and place, where the rounding is some
+  // 1e-6 of them): with the path box's slack (simd/particles.cpp, ObstacleSetT), no path or point
+  // outside it meets the solid in any computed test, so it may be culled.
+  float lo[3], hi[3];
+};
+
+// Many obstacles: the rows near a box come from the caller's tree (Obstacles::tree()) rather
+// than from a walk over every row.
+struct ObstacleTree {
+  const void* context;
+  // Sets `rows` to the rows whose boxes meet [lo, hi] and every plane's, in ascending order.
+  void (*near)(const void* context, const float* lo, const float* hi,
+               std::vector<std::uint32_t>& rows);
 };
 
 // What the particles met (StepProfile's counters), summed over a kernel call.

@@ -23,6 +23,8 @@
 #include <cstddef>
 #include <limits>
 #include <new>
+#include <span>
+#include <vector>
 
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
@@ -165,12 +167,9 @@ struct Surface {
   Vec3L<V> point, normal;
 };
 
-// One obstacle row as the step reads it, prepared once per call: its values; for an OBB its
-// columns normalized() as Eigen does (v / sqrt(|v|^2) when |v|^2 > 0, else v), hitObb's normal;
-// and a world box around the solid, grown by a margin far above the rounding of the exact tests
-// (a thousandth of the solid's size and place, where the rounding is some 1e-6 of them), so that
-// with PathBox's slack a point or a path that misses it cannot touch the solid in any computed
-// test.
+// One obstacle row as the step reads it, prepared once per call: its values, its grown box, and
+// for an OBB its columns normalized() as Eigen does (v / sqrt(|v|^2) when |v|^2 > 0, else v),
+// hitObb's normal.
 struct RowData {
   core::ObstacleRow::Kind kind;
   float v[15];
@@ -179,36 +178,11 @@ struct RowData {
 
   explicit RowData(const core::ObstacleRow& r) : kind(r.kind), units{} {
     for (int k = 0; k < 15; ++k) v[k] = r.v[k];
+    for (int k = 0; k < 3; ++k) lo[k] = r.lo[k], hi[k] = r.hi[k];
     for (int c = 0; c < 3; ++c) {
       const float* col = r.v + 6 + 3 * c;
       const float n2 = col[0] * col[0] + (col[1] * col[1] + col[2] * col[2]);
       for (int k = 0; k < 3; ++k) units[3 * c + k] = n2 > 0 ? col[k] / std::sqrt(n2) : col[k];
-    }
-    const float inf = std::numeric_limits<float>::infinity();
-    float center[3] = {}, reach[3] = {inf, inf, inf};
-    for (int k = 0; k < 3; ++k) {
-      switch (kind) {
-        case core::ObstacleRow::kPlane:  // a half-space: nothing is culled
-          center[k] = 0, reach[k] = inf;
-          break;
-        case core::ObstacleRow::kSphere:
-          center[k] = v[k], reach[k] = v[3];
-          break;
-        case core::ObstacleRow::kAabb:
-          center[k] = 0.5f * (v[k] + v[3 + k]), reach[k] = 0.5f * (v[3 + k] - v[k]);
-          break;
-        case core::ObstacleRow::kObb:  // the box's extent along world axis k
-          center[k] = v[k];
-          reach[k] =
-              std::abs(v[6 + k]) * v[3] + std::abs(v[9 + k]) * v[4] + std::abs(v[12 + k]) * v[5];
-          break;
-      }
-    }
-    const float size = std::max({reach[0], reach[1], reach[2], std::abs(center[0]),
-                                 std::abs(center[1]), std::abs(center[2])});
-    for (int k = 0; k < 3; ++k) {
-      const float grown = reach[k] * 1.001f + 1e-3f * size + 1e-6f;
-      lo[k] = center[k] - grown, hi[k] = center[k] + grown;
     }
   }
 };
@@ -239,7 +213,7 @@ struct Row {
   }
 
   // The lanes whose path may come near the row's solid: those not wholly beyond one face of its
-  // box (a NaN compares false: such a lane is tested).
+  // box (a NaN compares false: such a lane is tested). The reference's mayMeet, lane-wide.
   HWY_INLINE MaskOf<D> near(const PathBox<V>& path) const {
     auto away = Lt(lo[0], lo[0]);  // none
     for (int k = 0; k < 3; ++k) away = Or(away, Or(Lt(path.hi[k], lo[k]), Gt(path.lo[k], hi[k])));
@@ -247,20 +221,56 @@ struct Row {
   }
 };
 
-// The rows broadcast once per call, in memory aligned for vectors.
-template <class D>
+// The lowest (highest) value of the lanes of m, +inf (-inf) if none: a float lane's own.
+inline float lowest(ScalarLane, bool m, float x) {
+  return m ? x : std::numeric_limits<float>::infinity();
+}
+inline float highest(ScalarLane, bool m, float x) {
+  return m ? x : -std::numeric_limits<float>::infinity();
+}
+template <class D, class M, class V>
+HWY_INLINE float lowest(D d, M m, V x) {
+  return GetLane(MinOfLanes(d, IfThenElse(m, x, Set(d, std::numeric_limits<float>::infinity()))));
+}
+template <class D, class M, class V>
+HWY_INLINE float highest(D d, M m, V x) {
+  return GetLane(MaxOfLanes(d, IfThenElse(m, x, Set(d, -std::numeric_limits<float>::infinity()))));
+}
+
+// The rows broadcast once per call, in memory aligned for vectors, and with kTree the tree that
+// finds those near a vector's paths when there are many. (A step with the tree's call in it, even
+// untaken, keeps fewer vectors in registers: the step is compiled once without it.)
+template <class D, bool kTree>
 class Rows {
  public:
-  Rows(D d, const core::ObstacleRow* rows, std::size_t n)
-      : rows_(hwy::AllocateAligned<Row<D>>(n > 0 ? n : 1)), n_(n) {
+  Rows(D d, const core::ObstacleRow* rows, std::size_t n, const core::ObstacleTree* tree)
+      : rows_(hwy::AllocateAligned<Row<D>>(n > 0 ? n : 1)), tree_(tree), all_(n) {
     for (std::size_t i = 0; i < n; ++i) new (&rows_[i]) Row<D>(d, RowData(rows[i]));
+    for (std::size_t i = 0; i < n; ++i) all_[i] = std::uint32_t(i);
   }
-  const Row<D>* begin() const { return rows_.get(); }
-  const Row<D>* end() const { return rows_.get() + n_; }
+
+  const Row<D>& operator[](std::uint32_t i) const { return rows_[i]; }
+
+  // The rows, in order, that some lane of `live` may come near on `path`, a superset: every row,
+  // or with a tree those whose boxes meet the lanes' (a lane whose box is not finite meets all).
+  // The caller culls each lane with Row::near, as the reference's ObstacleSetT::near does.
+  template <class V = LaneOf<D>>
+  HWY_INLINE std::span<const std::uint32_t> near(D d, MaskOf<D> live, const PathBox<V>& path) {
+    if (!kTree) return all_;
+    float lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = lowest(d, live, path.lo[k]), hi[k] = highest(d, live, path.hi[k]);
+      if (!(std::abs(lo[k]) < kInf && std::abs(hi[k]) < kInf)) return all_;
+    }
+    tree_->near(tree_->context, lo, hi, ids_);
+    return ids_;
+  }
 
  private:
+  static constexpr float kInf = std::numeric_limits<float>::infinity();
   hwy::AlignedFreeUniquePtr<Row<D>[]> rows_;
-  std::size_t n_;
+  const core::ObstacleTree* tree_;
+  std::vector<std::uint32_t> all_, ids_;
 };
 
 // The unit vector along `axis` (a lane's 0, 1 or 2) of three, with the sign of `positive`.
@@ -435,18 +445,21 @@ HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, MaskOf
 }
 
 // pushOut(): the `live` lanes strictly inside a row, in order, go to `skin` outside it and lose
-// the part of v into its surface.
-template <class D, class V = LaneOf<D>>
-HWY_INLINE void pushOut(D d, const Params<D>& p, const Rows<D>& rows, MaskOf<D> live, Vec3L<V>& x,
+// the part of v into its surface. The rows are those near where the lanes start (with a tree, as
+// the reference finds them); without a tree, those near where they are when the row comes up.
+template <class D, bool kTree, class V = LaneOf<D>>
+HWY_INLINE void pushOut(D d, const Params<D>& p, Rows<D, kTree>& rows, MaskOf<D> live, Vec3L<V>& x,
                         Vec3L<V>& v, core::ParticleCounts& counts) {
+  if (AllFalse(d, live)) return;
   PathBox<V> at = pathBox(p, x, x);
-  for (const Row<D>& row : rows) {
+  for (const std::uint32_t i : rows.near(d, live, at)) {
+    const Row<D>& row = rows[i];
     if (AllFalse(d, And(live, row.near(at)))) continue;
     const Surface<D> e = exitOf(d, p, row, live, x);
     const auto in = e.hit;
     if (AllFalse(d, in)) continue;
     x = IfThenElse(in, e.point + e.normal * p.skin, x);
-    at = pathBox(p, x, x);
+    if (!kTree) at = pathBox(p, x, x);
     const V vn = dot(v, e.normal);
     v = IfThenElse(And(in, Lt(vn, p.zero)), v - e.normal * vn, v);
     counts.pushedOut += CountTrue(d, in);
@@ -489,9 +502,9 @@ HWY_INLINE void rest(const Params<D>& p, MaskOf<D> m, const Vec3L<V>& n, V tau, 
 }
 
 // stepParticle() for the lanes at [i, i + lanes) below `end`.
-template <class D>
+template <class D, bool kTree>
 HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::size_t i,
-                          std::size_t end, const Rows<D>& rows, core::ParticleCounts& counts) {
+                          std::size_t end, Rows<D, kTree>& rows, core::ParticleCounts& counts) {
   using V = LaneOf<D>;
   namespace F = fields;
   const auto load3 = [&](std::size_t f) {
@@ -518,7 +531,8 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     auto found = Lt(p.one, p.zero);
     V first = p.zero;
     Vec3L<V> normal{{p.zero, p.zero, p.zero}};
-    for (const Row<D>& row : rows) {
+    for (const std::uint32_t i : rows.near(d, live, path)) {
+      const Row<D>& row = rows[i];
       if (AllFalse(d, And(live, row.near(path)))) continue;
       const Surface<D> e = entryOf(d, p, row, live, x0, dir);
       const auto better = And(e.hit, Or(Not(found), Lt(e.s, first)));
@@ -567,29 +581,41 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
   }
 }
 
-template <class D>
-core::ParticleCounts stepRange(D d, const ParticlesView& s, std::size_t begin, std::size_t end,
-                               const core::ObstacleRow* rows, std::size_t n,
-                               const core::ParticleStepParams& params) {
+template <bool kTree, class D>
+HWY_NOINLINE core::ParticleCounts stepRange(D d, const ParticlesView& s, std::size_t begin,
+                                            std::size_t end, const core::ObstacleRow* rows,
+                                            std::size_t n, const core::ObstacleTree* tree,
+                                            const core::ParticleStepParams& params) {
   const Params<D> p(d, params);
-  Rows<D> prepared(d, rows, n);
+  Rows<D, kTree> prepared(d, rows, n, tree);
   core::ParticleCounts counts;
   for (std::size_t i = begin; i < end; i += Lanes(d)) stepLanes(d, p, s, i, end, prepared, counts);
   return counts;
 }
 
+template <class D>
+core::ParticleCounts stepRange(D d, const ParticlesView& s, std::size_t begin, std::size_t end,
+                               const core::ObstacleRow* rows, std::size_t n,
+                               const core::ObstacleTree* tree,
+                               const core::ParticleStepParams& params) {
+  return tree ? stepRange<true>(d, s, begin, end, rows, n, tree, params)
+              : stepRange<false>(d, s, begin, end, rows, n, tree, params);
+}
+
 core::ParticleCounts StepParticles(const ParticlesView& s, std::size_t begin, std::size_t end,
                                    const core::ObstacleRow* rows, std::size_t n,
+                                   const core::ObstacleTree* tree,
                                    const core::ParticleStepParams& params) {
-  return stepRange(hn::ScalableTag<float>(), s, begin, end, rows, n, params);
+  return stepRange(hn::ScalableTag<float>(), s, begin, end, rows, n, tree, params);
 }
 
 // ---- baseline ----------------------------------------------------------------------------------
 // The same step as a plain loop over the particles, a float per lane, left to the compiler.
 core::ParticleCounts StepParticlesAutovec(const ParticlesView& s, std::size_t begin,
                                           std::size_t end, const core::ObstacleRow* rows,
-                                          std::size_t n, const core::ParticleStepParams& params) {
-  return stepRange(ScalarLane(), s, begin, end, rows, n, params);
+                                          std::size_t n, const core::ObstacleTree* tree,
+                                          const core::ParticleStepParams& params) {
+  return stepRange(ScalarLane(), s, begin, end, rows, n, tree, params);
 }
 
 SIMDPHYS_TARGET_END();

@@ -121,6 +121,7 @@ struct Case {
   std::string name;
   ParticleSettings settings;
   bool hard;
+  bool many = false;  // 60 bounded obstacles more: found through the obstacles' tree
 };
 
 std::vector<Case> cases() {
@@ -154,13 +155,12 @@ Scene makeScene(const Case& c, int threads, int particles, std::uint32_t seed) {
     addHardObstacles(s.world.obstacles());
     addHardParticles(p);
   }
-  // At most kFewObstacles bounded ones: more are found through a tree, which only the reference
-  // walks (every path then runs it).
-  addObstacles(s.world.obstacles(), rng, c.hard ? 1 : 4);
+  // At most kFewObstacles bounded ones, each tested by every vector; or many, through the tree.
+  addObstacles(s.world.obstacles(), rng, c.many ? 60 : c.hard ? 1 : 4);
   std::size_t bounded = 0;
   for (const ObstacleShape& o : s.world.obstacles().shapes())
     bounded += !std::holds_alternative<Plane>(o);
-  EXPECT_LE(bounded, Obstacles::kFewObstacles);
+  EXPECT_EQ(bounded > Obstacles::kFewObstacles, c.many);
   addRandomParticles(p, rng, particles);
   return s;
 }
@@ -233,6 +233,32 @@ TEST_P(ParticleKernel, PlainLoopMatchesTheReferenceBitForBit) {
     if (HasFailure()) break;
   }
   detail::setPlainLoops(false);
+}
+
+// Many obstacles: the kernel takes the rows near each vector's paths from the obstacles' tree,
+// the reference those near each particle's; the same rows meet each particle, so the bits agree.
+TEST_P(ParticleKernel, ManyObstaclesThroughTheTreeMatchTheReference) {
+  std::vector<Case> many;
+  for (const int k : {0, 2, 7, 11}) {  // explicit Euler hard and limited, velocity and position
+    many.push_back(cases()[k]);        // Verlet with drag and friction, and limited
+    many.back().many = true;
+  }
+  StepProfile all;
+  for (const bool plain : {false, true}) {
+    if (plain && referencePathActive()) break;
+    detail::setPlainLoops(plain);
+    for (const Case& c : many) {
+      SCOPED_TRACE(c.name + (plain ? " (plain loop)" : ""));
+      const StepProfile t = compareWithReference(c, 4, 600);
+      all.contacts += t.contacts, all.pushedOut += t.pushedOut;
+      all.bounceLimited += t.bounceLimited;
+      if (HasFailure()) break;
+    }
+    detail::setPlainLoops(false);
+  }
+  EXPECT_GT(all.contacts, 1000u);
+  EXPECT_GT(all.pushedOut, 100u);
+  EXPECT_GT(all.bounceLimited, 10u);
 }
 
 // A world with no obstacles and one with particles only past the first vector's tail: the kernel

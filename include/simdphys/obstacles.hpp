@@ -56,6 +56,9 @@ class Obstacles {
   const Bvh* tree() const { return treeBuilt_ ? &tree_ : nullptr; }
   // Indices (into shapes()) of the bounded obstacles, in order, and of the planes.
   std::span<const std::uint32_t> bounded() const { return bounded_; }
+  // With the tree, the boxes it holds, one per bounded obstacle: a solid's grown past the
+  // rounding of the exact tests (no computed test meets it from outside), a mesh's vertices' box.
+  std::span<const Aabb> boxes() const { return boxes_; }
   std::span<const std::uint32_t> planes() const { return planes_; }
   void update();
 
@@ -63,6 +66,7 @@ class Obstacles {
   std::vector<ObstacleShape> shapes_;
   HandleTable handles_;
   std::vector<std::uint32_t> bounded_, planes_;
+  std::vector<Aabb> boxes_;
   Bvh tree_;
   bool treeBuilt_ = false, dirty_ = false;
 };

@@ -36,7 +36,7 @@ core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, Wor
         },
         o));
   const Obstacles& o = world.obstacles();
-  const reference::ObstacleSetT<double> set(shapes, o.tree(), o.bounded(), o.planes());
+  const reference::ObstacleSetT<double> set(shapes, o.tree(), o.bounded(), o.boxes(), o.planes());
   // The settings as the float paths take them, with the substep and its damping in double.
   reference::ParticleStep<double> step =
       reference::particleStep<double>(detail::stepParams(system, 0, 0));

@@ -6,6 +6,7 @@
 #include "simd/kernels.hpp"
 #include "src/core/on_path.hpp"
 #include "src/reference/particles/step-inl.hpp"
+#include "src/world/obstacle_rows.hpp"
 
 namespace simdphys::detail {
 
@@ -23,39 +24,14 @@ core::View<F::Particle, float> ParticleStreams::view(ParticleSystem& s) {
   return v;
 }
 
-std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles) {
-  std::vector<core::ObstacleRow> rows;
-  for (const ObstacleShape& shape : obstacles.shapes()) {
-    core::ObstacleRow r{};
-    const auto put = [&](int at, const Vec3f& v) {
-      for (int k = 0; k < 3; ++k) r.v[at + k] = v[k];
-    };
-    if (const auto* p = std::get_if<Plane>(&shape)) {
-      r.kind = core::ObstacleRow::kPlane, put(0, p->normal), r.v[3] = p->d;
-    } else if (const auto* s = std::get_if<Sphere>(&shape)) {
-      r.kind = core::ObstacleRow::kSphere, put(0, s->center), r.v[3] = s->radius;
-    } else if (const auto* b = std::get_if<Aabb>(&shape)) {
-      r.kind = core::ObstacleRow::kAabb, put(0, b->min), put(3, b->max);
-    } else if (const auto* o = std::get_if<Obb>(&shape)) {
-      r.kind = core::ObstacleRow::kObb, put(0, o->center), put(3, o->halfExtents);
-      for (int c = 0; c < 3; ++c) put(6 + 3 * c, o->axes.col(c));
-    } else {
-      continue;  // meshes are not tested lane-wide (laneWide() is false)
-    }
-    rows.push_back(r);
-  }
-  return rows;
-}
-
 bool laneWide(const Obstacles& obstacles) {
-  if (obstacles.tree()) return false;
   for (const ObstacleShape& shape : obstacles.shapes())
     if (std::holds_alternative<MeshObstacle>(shape)) return false;
   return true;
 }
 
 reference::ObstacleSetT<float> obstacleSet(const Obstacles& o) {
-  return reference::ObstacleSetT<float>(o.shapes(), o.tree(), o.bounded(), o.planes());
+  return reference::ObstacleSetT<float>(o.shapes(), o.tree(), o.bounded(), o.boxes(), o.planes());
 }
 
 core::ParticleStepParams stepParams(const ParticleSystem& system, float dt, float damping) {
@@ -109,10 +85,12 @@ core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obst
   // run the reference on every path; plainLoopsActive: the benchmarks' and tests' second baseline.
   const bool reference = referencePathActive() || !laneWide(obstacles);
   const auto& kernel = plainLoopsActive() ? simd::stepParticlesAutovec : simd::stepParticles;
+  const std::optional<core::ObstacleTree> tree = obstacleTree(obstacles);
   const auto run = [&](std::size_t part) {
     const std::size_t begin = part * kPartition, end = std::min(v.count, begin + kPartition);
     counts[part] = reference ? referenceRange(v, begin, end, set, params)
-                             : kernel(v, begin, end, rows.data(), rows.size(), params);
+                             : kernel(v, begin, end, rows.data(), rows.size(),
+                                      tree ? &*tree : nullptr, params);
   };
   if (parts > 1) {
     const int t = threads > 0 ? threads : omp_get_max_threads();

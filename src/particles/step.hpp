@@ -17,19 +17,17 @@ struct ParticleStreams {
   static core::View<fields::Particle, float> view(ParticleSystem& system);
 };
 
-// Whether the kernels can test the obstacles lane-wide: few, and no meshes. Otherwise every path
-// runs the reference, which finds them through the trees.
+// Whether the kernels can test the obstacles lane-wide: any number (many found through the
+// obstacles' tree) but no meshes, whose triangles every path leaves to the reference.
 bool laneWide(const Obstacles& obstacles);
-
-// The obstacles as the kernels read them (meshes left out).
-std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles);
 
 // A system's settings as the kernels take them, for one substep of length dt with `damping` the
 // substep's share of the per-step factor.
 core::ParticleStepParams stepParams(const ParticleSystem& system, float dt, float damping);
 
 // One substep of length dt for every particle of the system, with `damping` the substep's share
-// of the per-step factor; what the particles met.
+// of the per-step factor, against the obstacles and their rows (src/world/obstacle_rows.hpp);
+// what the particles met.
 core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obstacles,
                                    std::span<const core::ObstacleRow> rows, float dt, float damping,
                                    int threads);

@@ -4,6 +4,7 @@
 
 #include "simdphys/obstacles.hpp"
 #include "src/reference/particles/step-inl.hpp"
+#include "src/world/obstacle_rows.hpp"
 
 namespace simdphys {
 
@@ -22,15 +23,11 @@ void validateShape(const ObstacleShape& shape, const std::string& where) {
       shape);
 }
 
-// The box of a bounded obstacle.
+// The box of a bounded obstacle: a solid's grown box (core::ObstacleRow::lo: no computed test
+// meets it from outside), a mesh's vertices' box.
 Aabb bounds(const ObstacleShape& shape) {
-  if (const auto* s = std::get_if<Sphere>(&shape))
-    return {s->center.array() - s->radius, s->center.array() + s->radius};
-  if (const auto* b = std::get_if<Aabb>(&shape)) return *b;
-  if (const auto* o = std::get_if<Obb>(&shape)) {
-    const Vec3f reach = o->axes.cwiseAbs() * o->halfExtents;
-    return {o->center - reach, o->center + reach};
-  }
+  if (const auto row = detail::rowOf(shape))
+    return {Vec3f(row->lo[0], row->lo[1], row->lo[2]), Vec3f(row->hi[0], row->hi[1], row->hi[2])};
   Aabb box{Vec3f::Constant(kMaxCoordinate), Vec3f::Constant(-kMaxCoordinate)};
   for (const Vec3f& v : std::get<MeshObstacle>(shape)->mesh().vertices)
     box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
@@ -63,10 +60,12 @@ void Obstacles::update() {
   for (std::uint32_t i = 0; i < shapes_.size(); ++i)
     (std::holds_alternative<Plane>(shapes_[i]) ? planes_ : bounded_).push_back(i);
   treeBuilt_ = bounded_.size() > kFewObstacles;
+  boxes_.clear();
   if (treeBuilt_) {
-    BoxStream boxes;
-    for (std::uint32_t i : bounded_) boxes.push(bounds(shapes_[i]));
-    tree_.build(boxes);
+    BoxStream stream;
+    for (std::uint32_t i : bounded_)
+      boxes_.push_back(bounds(shapes_[i])), stream.push(boxes_.back());
+    tree_.build(stream);
   }
   dirty_ = false;
 }

@@ -7,6 +7,7 @@
 
 #include "src/particles/step.hpp"
 #include "src/reference/validate-inl.hpp"
+#include "src/world/obstacle_rows.hpp"
 
 namespace simdphys {
 

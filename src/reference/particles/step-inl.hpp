@@ -159,28 +159,52 @@ std::optional<Entry<T>> entryOf(const MeshObstacle& mesh, const Vec3<T>& x0, con
   return first;
 }
 
+// Whether the path from -> to may come near a box grown around an obstacle (ObstacleRow::lo):
+// the path's box widened by a slack far above the rounding of the exact tests where the
+// coordinates are large (1e-4 of their magnitudes). The kernel's cull (simd/particles.cpp:
+// pathBox, Row::near), operation for operation: a NaN or infinite coordinate is never culled.
+template <class T>
+bool mayMeet(const Aabb& box, const Vec3<T>& from, const Vec3<T>& to) {
+  using std::abs;
+  const T slack =
+      (abs(from[0]) + abs(from[1]) + abs(from[2]) + abs(to[0]) + abs(to[1]) + abs(to[2])) *
+      T(1e-4f);
+  for (int k = 0; k < 3; ++k) {
+    const T lo = (from[k] < to[k] ? from[k] : to[k]) - slack;
+    const T hi = (from[k] > to[k] ? from[k] : to[k]) + slack;
+    if (hi < T(box.min[k]) || lo > T(box.max[k])) return false;
+  }
+  return true;
+}
+
 // The obstacles a particle is tested against: every one, in order; or, with a tree (more than
-// Obstacles::kFewObstacles bounded ones), the planes and the bounded obstacles whose bounds meet
-// the box in question, still in order.
+// Obstacles::kFewObstacles bounded ones), the planes and the bounded obstacles whose grown boxes
+// the path may meet (mayMeet), still in order: the tree only finds them faster.
 template <class T>
 class ObstacleSetT {
  public:
   explicit ObstacleSetT(std::span<const ObstacleShapeT<T>> shapes, const Bvh* tree = nullptr,
                         std::span<const std::uint32_t> bounded = {},
+                        std::span<const Aabb> boxes = {},
                         std::span<const std::uint32_t> planes = {})
-      : shapes_(shapes), tree_(tree), bounded_(bounded), planes_(planes) {}
+      : shapes_(shapes), tree_(tree), bounded_(bounded), boxes_(boxes), planes_(planes) {}
 
-  // Calls f(shape) for each obstacle that may meet the box [lo, hi], in order.
+  // Calls f(shape) for each obstacle that the path from -> to may meet, in order.
   template <class F>
-  void near(const Vec3<T>& lo, const Vec3<T>& hi, F&& f) const {
+  void near(const Vec3<T>& from, const Vec3<T>& to, F&& f) const {
     if (!tree_) {
       for (const auto& s : shapes_) f(s);
       return;
     }
     std::vector<std::uint32_t> found, ids(planes_.begin(), planes_.end());
+    // A box around mayMeet's, for the tree.
+    const T slack = T(2e-4) * (from.cwiseAbs().sum() + to.cwiseAbs().sum());
     const Vec3<T> limit = Vec3<T>::Constant(T(kMaxCoordinate));
-    tree_->query(outwardBox<T>(lo.cwiseMax(-limit), hi.cwiseMin(limit)), found);
-    for (std::uint32_t k : found) ids.push_back(bounded_[k]);
+    const Vec3<T> lo = (from.cwiseMin(to).array() - slack).matrix().cwiseMax(-limit);
+    const Vec3<T> hi = (from.cwiseMax(to).array() + slack).matrix().cwiseMin(limit);
+    tree_->query(outwardBox<T>(lo, hi), found);
+    for (std::uint32_t k : found)
+      if (mayMeet(boxes_[k], from, to)) ids.push_back(bounded_[k]);
     std::sort(ids.begin(), ids.end());
     for (std::uint32_t i : ids) f(shapes_[i]);
   }
@@ -188,7 +212,9 @@ class ObstacleSetT {
  private:
   std::span<const ObstacleShapeT<T>> shapes_;
   const Bvh* tree_;
-  std::span<const std::uint32_t> bounded_, planes_;
+  std::span<const std::uint32_t> bounded_;
+  std::span<const Aabb> boxes_;
+  std::span<const std::uint32_t> planes_;
 };
 
 // Pushes p out of every obstacle it is strictly inside, in order, to `skin` outside, and takes
@@ -196,7 +222,7 @@ class ObstacleSetT {
 template <class T>
 void pushOut(const ObstacleSetT<T>& obstacles, T skin, Vec3<T>& p, Vec3<T>& v,
              ParticleCounts& counts) {
-  obstacles.near(p, p, [&](const ObstacleShapeT<T>& o) {
+  obstacles.near(p, p, [&](const ObstacleShapeT<T>& o) {  // near where p starts
     const auto e = std::visit([&](const auto& shape) { return exitOf(shape, p); }, o);
     if (!e) return;
     p = e->point + e->normal * skin;
@@ -268,7 +294,7 @@ void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Ve
     const Vec3<T> d = x1 - x0;
     if (d.squaredNorm() == 0) break;  // not moving: meets nothing
     std::optional<Entry<T>> first;
-    obstacles.near(x0.cwiseMin(x1), x0.cwiseMax(x1), [&](const ObstacleShapeT<T>& o) {
+    obstacles.near(x0, x1, [&](const ObstacleShapeT<T>& o) {
       const auto e = std::visit([&](const auto& shape) { return entryOf(shape, x0, d); }, o);
       if (e && (!first || e->s < first->s)) first = e;
     });

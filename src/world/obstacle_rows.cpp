@@ -1,0 +1,91 @@
+// The obstacles as rows (obstacle_rows.hpp).
+#include "src/world/obstacle_rows.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace simdphys::detail {
+
+namespace {
+
+// The row's box: its centre and reach per axis, grown (core::ObstacleRow::lo).
+void growBox(core::ObstacleRow& r) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const float* v = r.v;
+  float center[3] = {}, reach[3] = {inf, inf, inf};
+  for (int k = 0; k < 3; ++k) {
+    switch (r.kind) {
+      case core::ObstacleRow::kPlane:  // a half-space: nothing is culled
+        break;
+      case core::ObstacleRow::kSphere:
+        center[k] = v[k], reach[k] = v[3];
+        break;
+      case core::ObstacleRow::kAabb:
+        center[k] = 0.5f * (v[k] + v[3 + k]), reach[k] = 0.5f * (v[3 + k] - v[k]);
+        break;
+      case core::ObstacleRow::kObb:  // the box's extent along world axis k
+        center[k] = v[k];
+        reach[k] =
+            std::abs(v[6 + k]) * v[3] + std::abs(v[9 + k]) * v[4] + std::abs(v[12 + k]) * v[5];
+        break;
+    }
+  }
+  const float size = std::max({reach[0], reach[1], reach[2], std::abs(center[0]),
+                               std::abs(center[1]), std::abs(center[2])});
+  for (int k = 0; k < 3; ++k) {
+    const float grown = reach[k] * 1.001f + 1e-3f * size + 1e-6f;
+    r.lo[k] = center[k] - grown, r.hi[k] = center[k] + grown;
+  }
+}
+
+void treeNear(const void* context, const float* lo, const float* hi,
+              std::vector<std::uint32_t>& rows) {
+  const Obstacles& o = *static_cast<const Obstacles*>(context);
+  rows.assign(o.planes().begin(), o.planes().end());
+  thread_local std::vector<std::uint32_t> found;
+  found.clear();
+  const Vec3f limit = Vec3f::Constant(kMaxCoordinate);
+  const Aabb box{Vec3f(lo[0], lo[1], lo[2]).cwiseMax(-limit).cwiseMin(limit),
+                 Vec3f(hi[0], hi[1], hi[2]).cwiseMin(limit).cwiseMax(-limit)};
+  o.tree()->query(box, found);
+  for (std::uint32_t k : found) rows.push_back(o.bounded()[k]);
+  std::sort(rows.begin(), rows.end());
+}
+
+}  // namespace
+
+std::optional<core::ObstacleRow> rowOf(const ObstacleShape& shape) {
+  core::ObstacleRow r{};
+  const auto put = [&](int at, const Vec3f& v) {
+    for (int k = 0; k < 3; ++k) r.v[at + k] = v[k];
+  };
+  if (const auto* p = std::get_if<Plane>(&shape)) {
+    r.kind = core::ObstacleRow::kPlane, put(0, p->normal), r.v[3] = p->d;
+  } else if (const auto* s = std::get_if<Sphere>(&shape)) {
+    r.kind = core::ObstacleRow::kSphere, put(0, s->center), r.v[3] = s->radius;
+  } else if (const auto* b = std::get_if<Aabb>(&shape)) {
+    r.kind = core::ObstacleRow::kAabb, put(0, b->min), put(3, b->max);
+  } else if (const auto* o = std::get_if<Obb>(&shape)) {
+    r.kind = core::ObstacleRow::kObb, put(0, o->center), put(3, o->halfExtents);
+    for (int c = 0; c < 3; ++c) put(6 + 3 * c, o->axes.col(c));
+  } else {
+    return std::nullopt;
+  }
+  growBox(r);
+  return r;
+}
+
+std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles) {
+  std::vector<core::ObstacleRow> rows;
+  for (const ObstacleShape& shape : obstacles.shapes())
+    if (const auto r = rowOf(shape)) rows.push_back(*r);
+  return rows;
+}
+
+std::optional<core::ObstacleTree> obstacleTree(const Obstacles& obstacles) {
+  if (!obstacles.tree()) return std::nullopt;
+  return core::ObstacleTree{&obstacles, treeNear};
+}
+
+}  // namespace simdphys::detail
