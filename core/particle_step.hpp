@@ -20,6 +20,7 @@ struct ParticleStepParams {
   std::uint32_t integrator;  // a Method
   float gravity[3];
   float dt, damping, drag, restitution, friction, threshold, skin;
+  float limit;  // kMaxCoordinate: a step that would take |x| or |v| past it is not taken
   int maxBounces;
   bool forces;  // the force fields are set or drag is on: a = g + w (f - drag v)
 };
@@ -50,11 +51,12 @@ struct ObstacleTree {
 
 // What the particles met (StepProfile's counters), summed over a kernel call.
 struct ParticleCounts {
-  std::uint64_t contacts = 0, pushedOut = 0, bounceLimited = 0;
+  std::uint64_t contacts = 0, pushedOut = 0, bounceLimited = 0, outOfRange = 0;
   ParticleCounts& operator+=(const ParticleCounts& o) {
     contacts += o.contacts;
     pushedOut += o.pushedOut;
     bounceLimited += o.bounceLimited;
+    outOfRange += o.outOfRange;
     return *this;
   }
 };

@@ -103,7 +103,7 @@ struct Params {
   using V = LaneOf<D>;
   std::uint32_t integrator;
   Vec3L<V> gravity;
-  V dt, damping, drag, restitution, friction, threshold, skin, twoSkins;
+  V dt, damping, drag, restitution, friction, threshold, skin, twoSkins, limit;
   V zero, one, half, inf, slackScale;
   int maxBounces;
   bool forces;
@@ -119,6 +119,7 @@ struct Params {
         threshold(Set(d, p.threshold)),
         skin(Set(d, p.skin)),
         twoSkins(Set(d, 2 * p.skin)),
+        limit(Set(d, p.limit)),
         zero(Set(d, 0.0f)),
         one(Set(d, 1.0f)),
         half(Set(d, 0.5f)),
@@ -573,8 +574,13 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     live = hit;
   }
   pushOut(d, p, rows, active, x1, v1, counts);  // no particle ends a step inside (the reference's)
-  x = IfThenElse(active, x1, xIn);
-  v = IfThenElse(active, v1, vIn);
+  // Past the supported range (or NaN) the step is not taken.
+  auto inRange = active;
+  for (int k = 0; k < 3; ++k)
+    inRange = And(inRange, And(Le(Abs(x1[k]), p.limit), Le(Abs(v1[k]), p.limit)));
+  counts.outOfRange += CountTrue(d, And(active, Not(inRange)));
+  x = IfThenElse(inRange, x1, xIn);
+  v = IfThenElse(inRange, v1, vIn);
   for (int k = 0; k < 3; ++k) {
     StoreU(x[k], d, s[F::Particle::x + k] + i);
     StoreU(v[k], d, s[F::Particle::vx + k] + i);

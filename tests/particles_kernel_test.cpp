@@ -115,6 +115,9 @@ void addHardParticles(ParticleSystem& s) {
     s.add(Vec3f(0.5f, 1 + 0.0004f * float(k), 0.5f), Vec3f(0.1f * float(k), -0.2f, 0.05f));
   }
   s.add(Vec3f(0.5f, 0.5f, 0.5f), Vec3f(fast, 0, 0), 0.0f);  // pinned inside: untouched
+  // Pushed past the supported range in its first step (1e36 m/s^2), and one a step later: kept.
+  s.setForce(s.add(Vec3f(4, 4, 4), Vec3f(0, 0, 0), 1e18f), Vec3f(1e18f, 0, 0));
+  s.setForce(s.add(Vec3f(4, 5, 4), Vec3f(0, 0, 0), 45.0f), Vec3f(0, 0, 1e18f));  // 7.5e17 m/s
 }
 
 struct Case {
@@ -182,6 +185,7 @@ void expectSameCounts(const StepProfile& a, const StepProfile& b) {
   EXPECT_EQ(a.contacts, b.contacts);
   EXPECT_EQ(a.pushedOut, b.pushedOut);
   EXPECT_EQ(a.bounceLimited, b.bounceLimited);
+  EXPECT_EQ(a.outOfRange, b.outOfRange);
 }
 
 // Steps a world on the active path and its twin on the reference, comparing after every step;
@@ -203,6 +207,7 @@ StepProfile compareWithReference(const Case& c, int steps, int particles) {
     total.contacts += reference.world.profile().contacts;
     total.pushedOut += reference.world.profile().pushedOut;
     total.bounceLimited += reference.world.profile().bounceLimited;
+    total.outOfRange += reference.world.profile().outOfRange;
     if (::testing::Test::HasFailure()) break;
   }
   return total;
@@ -216,12 +221,15 @@ TEST_P(ParticleKernel, MatchesTheReferenceBitForBit) {
     SCOPED_TRACE(c.name);
     const StepProfile t = compareWithReference(c, 4, 600);
     all.contacts += t.contacts, all.pushedOut += t.pushedOut, all.bounceLimited += t.bounceLimited;
+    all.outOfRange += t.outOfRange;
     if (HasFailure()) return;
   }
-  // The inputs reach every branch that counts.
+  // The inputs reach every branch that counts: in the 4 hard cases' 4 steps, one wild particle
+  // is held every step and the other from the second on (7 a case).
   EXPECT_GT(all.contacts, 1000u);
   EXPECT_GT(all.pushedOut, 100u);
   EXPECT_GT(all.bounceLimited, 10u);
+  EXPECT_EQ(all.outOfRange, 4u * 7u);
 }
 
 TEST_P(ParticleKernel, PlainLoopMatchesTheReferenceBitForBit) {

@@ -375,8 +375,18 @@ TEST_P(Particles, ManyObstaclesAreFoundThroughTheTreeWithTheSameAnswers) {
     x.push_back(world.particles(s).position(world.particles(s).handle(i))),
         v.push_back(world.particles(s).velocity(world.particles(s).handle(i)));
   const reference::ObstacleSetT<float> all(world.obstacles().shapes());
-  reference::ParticleStep<float> step{
-      Integrator::kVelocityVerlet, {0, -9.82f, 0}, 1.0f / 60, 1, 0, 0.8f, 0.2f, 1, 1e-3f, 4, false};
+  reference::ParticleStep<float> step{Integrator::kVelocityVerlet,
+                                      {0, -9.82f, 0},
+                                      1.0f / 60,
+                                      1,
+                                      0,
+                                      0.8f,
+                                      0.2f,
+                                      1,
+                                      1e-3f,
+                                      kMaxCoordinate,
+                                      4,
+                                      false};
   core::ParticleCounts counts;
   std::uint64_t contacts = 0;
   for (int n = 0; n < 30; ++n) {

@@ -43,6 +43,7 @@ struct StepProfile {
   std::uint64_t contacts = 0;       // surfaces met (bounces, slides, rests)
   std::uint64_t pushedOut = 0;      // particles found inside an obstacle and pushed out
   std::uint64_t bounceLimited = 0;  // particles stopped at ParticleSettings::maxBounces
+  std::uint64_t outOfRange = 0;     // particles not moved: the step would take them past ±1e18
 };
 
 class World {

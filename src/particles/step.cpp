@@ -42,6 +42,7 @@ core::ParticleStepParams stepParams(const ParticleSystem& system, float dt, floa
   params.dt = dt, params.damping = damping, params.drag = s.drag;
   params.restitution = s.restitution, params.friction = s.friction;
   params.threshold = s.restitutionThreshold, params.skin = s.skin;
+  params.limit = kMaxCoordinate;
   params.maxBounces = s.maxBounces;
   params.forces = system.hasForces() || s.drag != 0;
   return params;

@@ -66,6 +66,7 @@ void World::step() {
         profile_.contacts += c.contacts;
         profile_.pushedOut += c.pushedOut;
         profile_.bounceLimited += c.bounceLimited;
+        profile_.outOfRange += c.outOfRange;
       }
     profile_.particles.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   }

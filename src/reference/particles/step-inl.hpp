@@ -25,7 +25,7 @@ template <class T>
 struct ParticleStep {
   Integrator integrator;
   Vec3<T> gravity;
-  T dt, damping, drag, restitution, friction, threshold, skin;
+  T dt, damping, drag, restitution, friction, threshold, skin, limit;
   int maxBounces;
   bool forces;  // read the force fields, or drag is on: a depends on more than gravity
 };
@@ -283,6 +283,7 @@ template <class T>
 void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Vec3<T>& x,
                   Vec3<T>& v, T invMass, const Vec3<T>& force, ParticleCounts& counts) {
   if (!(invMass > 0)) return;  // pinned
+  const Vec3<T> xIn = x, vIn = v;
   Vec3<T> a = p.gravity;
   if (p.forces) a = a + (force - v * p.drag) * invMass;
   pushOut(obstacles, p.skin, x, v, counts);
@@ -333,6 +334,17 @@ void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Ve
   // A path that ends within rounding of a surface it runs along (its entry computed just past
   // its end) may end a hair inside: no particle ends a step inside an obstacle.
   pushOut(obstacles, p.skin, x1, v1, counts);
+  // A step that would take the particle past the supported range (a force far beyond any real
+  // world's, or a NaN from one) is not taken: it stays as it was, counted, and nothing
+  // non-finite enters the streams.
+  bool inRange = true;
+  for (int k = 0; k < 3; ++k)
+    inRange = inRange && std::abs(x1[k]) <= p.limit && std::abs(v1[k]) <= p.limit;  // NaN: false
+  if (!inRange) {
+    ++counts.outOfRange;
+    x = xIn, v = vIn;
+    return;
+  }
   x = x1;
   v = v1;
 }
@@ -353,6 +365,7 @@ ParticleStep<T> particleStep(const core::ParticleStepParams& p) {
           T(p.friction),
           T(p.threshold),
           T(p.skin),
+          T(p.limit),
           p.maxBounces,
           p.forces};
 }
