@@ -29,20 +29,30 @@ constexpr std::size_t kReadBytes = 7 * sizeof(float), kWrittenBytes = 6 * sizeof
 constexpr std::size_t kForceBytes = 3 * sizeof(float);
 constexpr double kApart = 1e-3;  // m: the error above which a particle counts as apart
 
-const workloads::ParticleWorkload& initialWorld(std::size_t n) {
-  static std::map<std::size_t, std::unique_ptr<workloads::ParticleWorkload>> cache;
-  auto& w = cache[n];
-  if (!w) w = std::make_unique<workloads::ParticleWorkload>(workloads::makeParticleWorkload(n));
+// W4, or with `field` its variant with 256 more obstacles (workloads::addParticleField).
+struct Variant {
+  std::size_t n;
+  bool field;
+  auto operator<=>(const Variant&) const = default;
+};
+
+const workloads::ParticleWorkload& initialWorld(Variant v) {
+  static std::map<Variant, std::unique_ptr<workloads::ParticleWorkload>> cache;
+  auto& w = cache[v];
+  if (!w) {
+    w = std::make_unique<workloads::ParticleWorkload>(workloads::makeParticleWorkload(v.n));
+    if (v.field) workloads::addParticleField(w->world);
+  }
   return *w;
 }
 
 // The final positions of W4 stepped 300 frames by the double reference: slow (a minute at
 // 1,000,000), so computed once per N and shared by every path's run.
-const std::vector<Vec3d>& doubleFinal(std::size_t n) {
-  static std::map<std::size_t, std::vector<Vec3d>> cache;
-  std::vector<Vec3d>& x = cache[n];
+const std::vector<Vec3d>& doubleFinal(Variant v) {
+  static std::map<Variant, std::vector<Vec3d>> cache;
+  std::vector<Vec3d>& x = cache[v];
   if (x.empty()) {
-    workloads::ParticleWorkload w = initialWorld(n);  // stepDouble updates the world's obstacles
+    workloads::ParticleWorkload w = initialWorld(v);  // stepDouble updates the world's obstacles
     const ParticleSystem& s = w.world.particles(w.particles);
     test::ParticlesD p = test::toDouble(s);
     for (int f = 0; f < workloads::kParticleFrames; ++f) test::stepDouble(p, s, w.world);
@@ -64,8 +74,9 @@ double depthInside(const Obstacles& obstacles, const Vec3f& p) {
 
 // W4's final state against the obstacles and the double reference. A particle inside an
 // obstacle is what W4 forbids; the run keeps its time and the report flags it.
-void finalCounters(benchmark::State& state, const World& world, const ParticleSystem& s) {
-  const std::vector<Vec3d>& exact = doubleFinal(s.size());
+void finalCounters(benchmark::State& state, Variant variant, const World& world,
+                   const ParticleSystem& s) {
+  const std::vector<Vec3d>& exact = doubleFinal(variant);
   std::size_t inside = 0, apart = 0;
   double height = 0, worst = 0, squares = 0, depth = 0;
   for (std::uint32_t i = 0; i < s.size(); ++i) {
@@ -86,9 +97,10 @@ void finalCounters(benchmark::State& state, const World& world, const ParticleSy
 }
 
 // One run: W4 from its initial state, one frame an iteration (registered with 300 of them).
-void particlesRun(benchmark::State& state, std::size_t n, bool plainLoops) {
-  doubleFinal(n);  // before the timing, the first time
-  workloads::ParticleWorkload w = initialWorld(n);
+void particlesRun(benchmark::State& state, Variant variant, bool plainLoops) {
+  doubleFinal(variant);  // before the timing, the first time
+  workloads::ParticleWorkload w = initialWorld(variant);
+  const std::size_t n = variant.n;
   const ParticleSystem& s = w.world.particles(w.particles);
   std::uint64_t contacts = 0, pushedOut = 0, limited = 0;
   std::optional<test::ScopedPlainLoops> plain;
@@ -109,7 +121,7 @@ void particlesRun(benchmark::State& state, std::size_t n, bool plainLoops) {
   if (state.iterations() != workloads::kParticleFrames)
     state.SkipWithError("W4 runs 300 frames: its checks need the final state");
   else
-    finalCounters(state, w.world, s);
+    finalCounters(state, variant, w.world, s);
 }
 
 // Times world.step() called as the benchmark's loop, and reports nanoseconds a step.
@@ -242,17 +254,27 @@ void oscillator(benchmark::State& state, Integrator integrator, int stepsPerSeco
 void registerParticleBenchmarks() {
   for (std::size_t n : {100'000, 1'000'000}) {
     registerPerPath(
-        "particles", "w4", n, [n](benchmark::State& state) { particlesRun(state, n, false); }, true,
-        workloads::kParticleFrames);
+        "particles", "w4", n,
+        [n](benchmark::State& state) {
+          particlesRun(state, {n, false}, false);
+        },
+        true, workloads::kParticleFrames);
     // The plain loop over the streams (simd/particles.cpp's stepParticlesAutovec), compiled for
     // each SIMD path: the step runs it while plain loops are on. At 1,000,000 on the best path
     // only: its ratio is read at 100,000, and the larger runs are the slow ones.
-    const Body plain = [n](benchmark::State& state) { particlesRun(state, n, true); };
+    const Body plain = [n](benchmark::State& state) { particlesRun(state, {n, false}, true); };
     if (n == 100'000)
       registerPerPath("particles", "autovec", n, plain, false, workloads::kParticleFrames);
     else
       registerBestPath("particles", "autovec", n, plain, workloads::kParticleFrames);
   }
+  // Many obstacles, found through the tree: W4 with 256 pillars more, at 100,000.
+  registerPerPath(
+      "particles", "w4_field", 100'000,
+      [](benchmark::State& state) {
+        particlesRun(state, {100'000, true}, false);
+      },
+      true, workloads::kParticleFrames);
   registerPerPath("world_step", "empty", 0, [](benchmark::State& state) {
     World world;
     stepCost(state, world);

@@ -3,6 +3,7 @@
 // flat rows. The scalar reference (src/reference/particles/step-inl.hpp) defines the arithmetic.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -44,8 +45,10 @@ struct ObstacleRow {
 // than from a walk over every row.
 struct ObstacleTree {
   const void* context;
-  // Sets `rows` to the rows whose boxes meet [lo, hi] and every plane's, in ascending order.
-  void (*near)(const void* context, const float* lo, const float* hi,
+  // Sets `rows` to every plane's row and those whose boxes meet any of the n boxes [lo, hi], in
+  // ascending order. lo and hi hold the x coordinates of the n boxes, then the y, then the z; a
+  // box with lo > hi is empty.
+  void (*near)(const void* context, const float* lo, const float* hi, std::size_t n,
                std::vector<std::uint32_t>& rows);
 };
 

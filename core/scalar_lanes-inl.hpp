@@ -11,6 +11,7 @@ inline std::size_t Lanes(ScalarLane) { return 1; }
 inline bool FirstN(ScalarLane, std::size_t n) { return n > 0; }
 inline float LoadU(ScalarLane, const float* p) { return *p; }
 inline void StoreU(float x, ScalarLane, float* p) { *p = x; }
+inline void Store(float x, ScalarLane, float* p) { *p = x; }
 inline float Sub(float a, float b) { return a - b; }
 inline float Mul(float a, float b) { return a * b; }
 inline float Max(float a, float b) { return a > b ? a : b; }
@@ -27,5 +28,6 @@ inline bool And(bool a, bool b) { return a & b; }
 inline bool Or(bool a, bool b) { return a | b; }
 inline bool Not(bool a) { return !a; }
 inline bool AllFalse(ScalarLane, bool m) { return !m; }
+inline bool AllTrue(ScalarLane, bool m) { return m; }
 inline std::size_t CountTrue(ScalarLane, bool m) { return m; }
 inline float IfThenElse(bool m, float a, float b) { return m ? a : b; }

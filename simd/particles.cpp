@@ -222,22 +222,6 @@ struct Row {
   }
 };
 
-// The lowest (highest) value of the lanes of m, +inf (-inf) if none: a float lane's own.
-inline float lowest(ScalarLane, bool m, float x) {
-  return m ? x : std::numeric_limits<float>::infinity();
-}
-inline float highest(ScalarLane, bool m, float x) {
-  return m ? x : -std::numeric_limits<float>::infinity();
-}
-template <class D, class M, class V>
-HWY_INLINE float lowest(D d, M m, V x) {
-  return GetLane(MinOfLanes(d, IfThenElse(m, x, Set(d, std::numeric_limits<float>::infinity()))));
-}
-template <class D, class M, class V>
-HWY_INLINE float highest(D d, M m, V x) {
-  return GetLane(MaxOfLanes(d, IfThenElse(m, x, Set(d, -std::numeric_limits<float>::infinity()))));
-}
-
 // The rows broadcast once per call, in memory aligned for vectors, and with kTree the tree that
 // finds those near a vector's paths when there are many. (A step with the tree's call in it, even
 // untaken, keeps fewer vectors in registers: the step is compiled once without it.)
@@ -245,7 +229,10 @@ template <class D, bool kTree>
 class Rows {
  public:
   Rows(D d, const core::ObstacleRow* rows, std::size_t n, const core::ObstacleTree* tree)
-      : rows_(hwy::AllocateAligned<Row<D>>(n > 0 ? n : 1)), tree_(tree), all_(n) {
+      : rows_(hwy::AllocateAligned<Row<D>>(n > 0 ? n : 1)),
+        tree_(tree),
+        all_(n),
+        boxes_(hwy::AllocateAligned<float>(6 * Lanes(d))) {
     for (std::size_t i = 0; i < n; ++i) new (&rows_[i]) Row<D>(d, RowData(rows[i]));
     for (std::size_t i = 0; i < n; ++i) all_[i] = std::uint32_t(i);
   }
@@ -253,17 +240,20 @@ class Rows {
   const Row<D>& operator[](std::uint32_t i) const { return rows_[i]; }
 
   // The rows, in order, that some lane of `live` may come near on `path`, a superset: every row,
-  // or with a tree those whose boxes meet the lanes' (a lane whose box is not finite meets all).
+  // or with a tree those whose boxes meet a lane's (a lane whose box is not finite meets all).
   // The caller culls each lane with Row::near, as the reference's ObstacleSetT::near does.
   template <class V = LaneOf<D>>
   HWY_INLINE std::span<const std::uint32_t> near(D d, MaskOf<D> live, const PathBox<V>& path) {
     if (!kTree) return all_;
-    float lo[3], hi[3];
+    const V inf = Set(d, kInf);
+    auto finite = Not(live);
     for (int k = 0; k < 3; ++k) {
-      lo[k] = lowest(d, live, path.lo[k]), hi[k] = highest(d, live, path.hi[k]);
-      if (!(std::abs(lo[k]) < kInf && std::abs(hi[k]) < kInf)) return all_;
+      finite = Or(finite, And(Lt(Abs(path.lo[k]), inf), Lt(Abs(path.hi[k]), inf)));
+      Store(IfThenElse(live, path.lo[k], inf), d, boxes_.get() + k * Lanes(d));
+      Store(IfThenElse(live, path.hi[k], Neg(inf)), d, boxes_.get() + (3 + k) * Lanes(d));
     }
-    tree_->near(tree_->context, lo, hi, ids_);
+    if (!AllTrue(d, finite)) return all_;
+    tree_->near(tree_->context, boxes_.get(), boxes_.get() + 3 * Lanes(d), Lanes(d), ids_);
     return ids_;
   }
 
@@ -272,6 +262,7 @@ class Rows {
   hwy::AlignedFreeUniquePtr<Row<D>[]> rows_;
   const core::ObstacleTree* tree_;
   std::vector<std::uint32_t> all_, ids_;
+  hwy::AlignedFreeUniquePtr<float[]> boxes_;  // the lanes' boxes for the tree: lo x, y, z, hi
 };
 
 // The unit vector along `axis` (a lane's 0, 1 or 2) of three, with the sign of `positive`.

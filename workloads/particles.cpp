@@ -9,6 +9,25 @@ Obb particleGround() { return {{0, -1, 0}, {20, 1, 20}}; }
 
 Obb particleRamp() { return {{0, 2, 0}, {6, 0.25f, 6}, rotationZ(0.35).cast<float>()}; }
 
+void addParticleField(World& world) {
+  for (int i = 0; i < 16; ++i)
+    for (int k = 0; k < 16; ++k) {
+      const float x = -9.375f + 1.25f * float(i), z = -9.375f + 1.25f * float(k);
+      switch ((i + k) % 3) {
+        case 0:
+          world.obstacles().add(Sphere{{x, 0.4f, z}, 0.4f});
+          break;
+        case 1:
+          world.obstacles().add(Aabb{{x - 0.3f, 0, z - 0.3f}, {x + 0.3f, 1.2f, z + 0.3f}});
+          break;
+        default:
+          world.obstacles().add(
+              Obb{{x, 0.5f, z}, {0.35f, 0.5f, 0.2f}, rotationY(0.3 * (i + 2 * k)).cast<float>()});
+          break;
+      }
+    }
+}
+
 ParticleWorkload makeParticleWorkload(std::size_t n) {
   ParticleSettings settings;
   settings.gravity = {0, -9.82f, 0};

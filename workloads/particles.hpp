@@ -19,6 +19,13 @@ struct ParticleWorkload {
 };
 ParticleWorkload makeParticleWorkload(std::size_t n = 100'000);
 
+// Our variant of W4 with many obstacles (not in WORKLOADS.md): 256 pillars after the ground and
+// the ramp, a 16 x 16 grid at a pitch of 1.25 m over x, z in [-9.375, 9.375], standing on the
+// ground; by (i + k) mod 3 a sphere (radius 0.4), an AABB (half extents 0.3, 0.6, 0.3) or an OBB
+// (half extents 0.35, 0.5, 0.2, turned 0.3 (i + 2k) rad about +y). More than
+// Obstacles::kFewObstacles: the particles find them through the obstacles' tree.
+void addParticleField(World& world);
+
 // The obstacles as W4 states them, in the world's order.
 Obb particleGround();
 Obb particleRamp();  // rotated 0.35 rad about +z, the axes computed in double and rounded once

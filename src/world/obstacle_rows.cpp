@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "simd/kernels.hpp"
+
 namespace simdphys::detail {
 
 namespace {
@@ -39,16 +41,22 @@ void growBox(core::ObstacleRow& r) {
   }
 }
 
-void treeNear(const void* context, const float* lo, const float* hi,
+// The tree's SIMD walk, without the checks of Bvh::query (the kernels' boxes are finite), one
+// walk a box.
+void treeNear(const void* context, const float* lo, const float* hi, std::size_t n,
               std::vector<std::uint32_t>& rows) {
   const Obstacles& o = *static_cast<const Obstacles*>(context);
-  rows.assign(o.planes().begin(), o.planes().end());
+  const std::span<const BvhNode> nodes = o.tree()->nodes();
   thread_local std::vector<std::uint32_t> found;
   found.clear();
-  const Vec3f limit = Vec3f::Constant(kMaxCoordinate);
-  const Aabb box{Vec3f(lo[0], lo[1], lo[2]).cwiseMax(-limit).cwiseMin(limit),
-                 Vec3f(hi[0], hi[1], hi[2]).cwiseMin(limit).cwiseMax(-limit)};
-  o.tree()->query(box, found);
+  for (std::size_t i = 0; i < n; ++i) {
+    const simd::Box box{lo[i], lo[n + i], lo[2 * n + i], hi[i], hi[n + i], hi[2 * n + i]};
+    if (!(box.minX <= box.maxX && box.minY <= box.maxY && box.minZ <= box.maxZ)) continue;
+    simd::bvhQuery(nodes.data(), nodes.size(), box, found);
+  }
+  std::sort(found.begin(), found.end());
+  found.erase(std::unique(found.begin(), found.end()), found.end());
+  rows.assign(o.planes().begin(), o.planes().end());
   for (std::uint32_t k : found) rows.push_back(o.bounded()[k]);
   std::sort(rows.begin(), rows.end());
 }

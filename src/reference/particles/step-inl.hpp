@@ -10,12 +10,14 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "core/particle_step.hpp"
 #include "simdphys/obstacles.hpp"
 #include "simdphys/particles.hpp"
+#include "src/bvh/scalar_walk.hpp"
 #include "src/reference/geometry3d/raycast-inl.hpp"
 
 namespace simdphys::reference {
@@ -106,15 +108,20 @@ std::optional<Exit<T>> exitOf(const MeshObstacle&, const Vec3<T>&) {
   return std::nullopt;
 }
 
-// The float box around [lo, hi], rounded outwards, for the trees' queries.
+// The float box around [lo, hi] (from double rounded outwards, within the supported range), for
+// the trees' queries.
 template <class T>
 Aabb outwardBox(const Vec3<T>& lo, const Vec3<T>& hi) {
-  Aabb box;
-  for (int k = 0; k < 3; ++k) {
-    box.min[k] = std::nextafter(float(lo[k]), -kMaxCoordinate);
-    box.max[k] = std::nextafter(float(hi[k]), kMaxCoordinate);
+  if constexpr (std::is_same_v<T, float>) {
+    return {lo, hi};
+  } else {
+    Aabb box;
+    for (int k = 0; k < 3; ++k) {
+      box.min[k] = std::nextafter(float(lo[k]), -kMaxCoordinate);
+      box.max[k] = std::nextafter(float(hi[k]), kMaxCoordinate);
+    }
+    return box;
   }
-  return box;
 }
 
 // The first surface the path x0 -> x1 enters: the fraction s of the path and the outward normal
@@ -196,15 +203,18 @@ class ObstacleSetT {
       for (const auto& s : shapes_) f(s);
       return;
     }
-    std::vector<std::uint32_t> found, ids(planes_.begin(), planes_.end());
-    // A box around mayMeet's, for the tree.
+    std::vector<std::uint32_t> ids(planes_.begin(), planes_.end());
+    // A box around mayMeet's for the tree (twice its slack covers the rounding to float).
     const T slack = T(2e-4) * (from.cwiseAbs().sum() + to.cwiseAbs().sum());
-    const Vec3<T> limit = Vec3<T>::Constant(T(kMaxCoordinate));
-    const Vec3<T> lo = (from.cwiseMin(to).array() - slack).matrix().cwiseMax(-limit);
-    const Vec3<T> hi = (from.cwiseMax(to).array() + slack).matrix().cwiseMin(limit);
-    tree_->query(outwardBox<T>(lo, hi), found);
-    for (std::uint32_t k : found)
+    const Vec3<T> lo = from.cwiseMin(to).array() - slack, hi = from.cwiseMax(to).array() + slack;
+    const Aabb box = outwardBox<T>(lo, hi);
+    if (!(box.min.array() <= box.max.array()).all()) {  // a NaN: every obstacle
+      for (const auto& s : shapes_) f(s);
+      return;
+    }
+    overlappingLeaves(tree_->nodes(), box, [&](std::uint32_t k, std::uint32_t) {
       if (mayMeet(boxes_[k], from, to)) ids.push_back(bounded_[k]);
+    });
     std::sort(ids.begin(), ids.end());
     for (std::uint32_t i : ids) f(shapes_[i]);
   }
