@@ -24,6 +24,9 @@ struct ParticleStepParams {
   float limit;  // kMaxCoordinate: a step that would take |x| or |v| past it is not taken
   int maxBounces;
   bool forces;  // the force fields are set or drag is on: a = g + w (f - drag v)
+  // Look for particles inside an obstacle before the step: false when the last step left every
+  // one outside the same obstacles (its final push-out moved none) and none was set since.
+  bool pushOutFirst = true;
 };
 
 // One obstacle (obstacles.hpp), in the order the obstacles are tested.
@@ -55,11 +58,13 @@ struct ObstacleTree {
 // What the particles met (StepProfile's counters), summed over a kernel call.
 struct ParticleCounts {
   std::uint64_t contacts = 0, pushedOut = 0, bounceLimited = 0, outOfRange = 0;
+  std::uint64_t endPushed = 0;  // of pushedOut, those by the step's final push-out
   ParticleCounts& operator+=(const ParticleCounts& o) {
     contacts += o.contacts;
     pushedOut += o.pushedOut;
     bounceLimited += o.bounceLimited;
     outOfRange += o.outOfRange;
+    endPushed += o.endPushed;
     return *this;
   }
 };

@@ -1,5 +1,6 @@
-// The particle step (particles.hpp) over the particle streams, a particle per lane: forces,
-// damping, the integrator, the push out of obstacles a particle starts in, and the collision of
+// The particle step (particles.hpp) over the particle streams, a particle per lane: the push out
+// of obstacles a particle starts in (a pass of its own, when one may be), forces, damping, the
+// integrator, and the collision of
 // the path travelled with every obstacle row, bounce after bounce (or resting contact) while any
 // lane still meets one. A row whose box no live lane's path comes near is skipped for the vector:
 // a cull with a margin far above rounding, so it changes no result.
@@ -106,7 +107,7 @@ struct Params {
   V dt, damping, drag, restitution, friction, threshold, skin, twoSkins, limit;
   V zero, one, half, inf, slackScale;
   int maxBounces;
-  bool forces;
+  bool forces, pushOutFirst;
 
   Params(D d, const core::ParticleStepParams& p)
       : integrator(p.integrator),
@@ -126,7 +127,8 @@ struct Params {
         inf(Set(d, std::numeric_limits<float>::infinity())),
         slackScale(Set(d, 1e-4f)),
         maxBounces(p.maxBounces),
-        forces(p.forces) {}
+        forces(p.forces),
+        pushOutFirst(p.pushOutFirst) {}
 };
 
 #include "core/particle_integrate-inl.hpp"
@@ -510,7 +512,6 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
   Vec3L<V> a = p.gravity;
   if (p.forces) a = a + (load3(F::Particle::fx) - vIn * p.drag) * w;
   Vec3L<V> x = xIn, v = vIn;
-  pushOut(d, p, rows, active, x, v, counts);
   Vec3L<V> x0 = x, v0 = v * p.damping, x1 = x0, v1 = v0;
   V tau = p.dt;
   integrate(p, x1, v1, tau, a);
@@ -564,7 +565,9 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     v1 = IfThenElse(hit, vn, v1);
     live = hit;
   }
+  const std::uint64_t before = counts.pushedOut;
   pushOut(d, p, rows, active, x1, v1, counts);  // no particle ends a step inside (the reference's)
+  counts.endPushed += counts.pushedOut - before;
   // Past the supported range (or NaN) the step is not taken.
   auto inRange = active;
   for (int k = 0; k < 3; ++k)
@@ -572,6 +575,29 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
   counts.outOfRange += CountTrue(d, And(active, Not(inRange)));
   x = IfThenElse(inRange, x1, xIn);
   v = IfThenElse(inRange, v1, vIn);
+  for (int k = 0; k < 3; ++k) {
+    StoreU(x[k], d, s[F::Particle::x + k] + i);
+    StoreU(v[k], d, s[F::Particle::vx + k] + i);
+  }
+}
+
+// The step's first push-out (pushOut()) for the lanes at [i, i + lanes) below `end`, as a pass
+// of its own: the step runs it only when a particle may be inside (ParticleStepParams), and the
+// fused step is faster without its code.
+template <class D, bool kTree>
+HWY_INLINE void pushOutLanes(D d, const Params<D>& p, const ParticlesView& s, std::size_t i,
+                             std::size_t end, Rows<D, kTree>& rows, core::ParticleCounts& counts) {
+  using V = LaneOf<D>;
+  namespace F = fields;
+  const V w = LoadU(d, s[F::Particle::invMass] + i);
+  const auto active = And(Gt(w, p.zero), FirstN(d, end - i));
+  if (AllFalse(d, active)) return;
+  Vec3L<V> x, v;
+  for (int k = 0; k < 3; ++k) {
+    x[k] = LoadU(d, s[F::Particle::x + k] + i);
+    v[k] = LoadU(d, s[F::Particle::vx + k] + i);
+  }
+  pushOut(d, p, rows, active, x, v, counts);
   for (int k = 0; k < 3; ++k) {
     StoreU(x[k], d, s[F::Particle::x + k] + i);
     StoreU(v[k], d, s[F::Particle::vx + k] + i);
@@ -586,6 +612,9 @@ HWY_NOINLINE core::ParticleCounts stepRange(D d, const ParticlesView& s, std::si
   const Params<D> p(d, params);
   Rows<D, kTree> prepared(d, rows, n, tree);
   core::ParticleCounts counts;
+  if (p.pushOutFirst)
+    for (std::size_t i = begin; i < end; i += Lanes(d))
+      pushOutLanes(d, p, s, i, end, prepared, counts);
   for (std::size_t i = begin; i < end; i += Lanes(d)) stepLanes(d, p, s, i, end, prepared, counts);
   return counts;
 }

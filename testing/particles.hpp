@@ -14,6 +14,7 @@ namespace simdphys::test {
 struct ParticlesD {
   std::vector<Vec3d> x, v, force;
   std::vector<double> invMass;
+  std::uint64_t outsideOf = 0;  // ParticleSystem's: the step's first push-out is skipped alike
 };
 
 ParticlesD toDouble(const ParticleSystem& system);

@@ -61,6 +61,8 @@ class Obstacles {
   std::span<const Aabb> boxes() const { return boxes_; }
   std::span<const std::uint32_t> planes() const { return planes_; }
   void update();
+  // Changes whenever an obstacle is added or removed.
+  std::uint64_t version() const { return version_; }
 
  private:
   std::vector<ObstacleShape> shapes_;
@@ -69,6 +71,7 @@ class Obstacles {
   std::vector<Aabb> boxes_;
   Bvh tree_;
   bool treeBuilt_ = false, dirty_ = false;
+  std::uint64_t version_ = 1;
 };
 
 }  // namespace simdphys

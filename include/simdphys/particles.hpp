@@ -115,6 +115,9 @@ class ParticleSystem : public StreamSet<fields::Particle> {
   ParticleSettings settings_;
   HandleTable handles_;
   bool hasForces_ = false;
+  // The Obstacles::version() that the last step left every particle outside of (none strictly
+  // inside an obstacle), 0 if unknown: a step then need not look for particles inside first.
+  std::uint64_t outsideOf_ = 0;
 };
 
 }  // namespace simdphys

@@ -81,6 +81,7 @@ Handle ParticleSystem::add(const Vec3f& position, const Vec3f& velocity, float i
   for (int k = 0; k < 3; ++k) values[F::Particle::vx + k] = velocity[k];
   values[F::Particle::invMass] = invMass;
   append(values);
+  outsideOf_ = 0;
   return handles_.add();
 }
 
@@ -100,6 +101,7 @@ void ParticleSystem::setPosition(Handle h, const Vec3f& position) {
   const std::uint32_t i = require(h, "ParticleSystem::setPosition");
   detail::requireFiniteField(position, detail::at("ParticleSystem::setPosition", i), "position");
   storeVec(F::Particle::x, i, position);
+  outsideOf_ = 0;
 }
 
 void ParticleSystem::setVelocity(Handle h, const Vec3f& velocity) {

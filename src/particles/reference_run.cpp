@@ -43,9 +43,14 @@ core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, Wor
   step.dt = double(w.timeStep) / w.substeps;
   step.damping = std::pow(double(system.settings().damping), 1.0 / w.substeps);
   core::ParticleCounts counts;
-  for (int sub = 0; sub < w.substeps; ++sub)
+  for (int sub = 0; sub < w.substeps; ++sub) {
+    step.pushOutFirst = p.outsideOf != o.version();
+    core::ParticleCounts c;
     for (std::size_t i = 0; i < p.x.size(); ++i)
-      reference::stepParticle<double>(step, set, p.x[i], p.v[i], p.invMass[i], p.force[i], counts);
+      reference::stepParticle<double>(step, set, p.x[i], p.v[i], p.invMass[i], p.force[i], c);
+    p.outsideOf = c.endPushed == 0 ? o.version() : 0;
+    counts += c;
+  }
   return counts;
 }
 

@@ -76,7 +76,9 @@ core::ParticleCounts referenceRange(const core::View<F::Particle, float>& v, std
 core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obstacles,
                                    std::span<const core::ObstacleRow> rows, float dt, float damping,
                                    int threads) {
-  const core::ParticleStepParams params = stepParams(system, dt, damping);
+  core::ParticleStepParams params = stepParams(system, dt, damping);
+  std::uint64_t& outsideOf = ParticleStreams::outsideOf(system);
+  params.pushOutFirst = outsideOf != obstacles.version();
 
   const core::View<F::Particle, float> v = ParticleStreams::view(system);
   const reference::ObstacleSetT<float> set = obstacleSet(obstacles);
@@ -102,6 +104,8 @@ core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obst
   }
   core::ParticleCounts total;
   for (const core::ParticleCounts& c : counts) total += c;
+  // A particle pushed at the end may have been pushed into an obstacle tested before.
+  outsideOf = total.endPushed == 0 ? obstacles.version() : 0;
   return total;
 }
 

@@ -15,6 +15,8 @@ namespace simdphys::detail {
 struct ParticleStreams {
   // The system's fields, whole padded arrays, to step in place.
   static core::View<fields::Particle, float> view(ParticleSystem& system);
+  // ParticleSystem::outsideOf_.
+  static std::uint64_t& outsideOf(ParticleSystem& system) { return system.outsideOf_; }
 };
 
 // Whether the kernels can test the obstacles lane-wide: any number (many found through the

@@ -40,6 +40,7 @@ Handle Obstacles::add(const ObstacleShape& shape) {
   validateShape(shape, "Obstacles::add: obstacle " + std::to_string(shapes_.size()));
   shapes_.push_back(shape);
   dirty_ = true;
+  ++version_;
   return handles_.add();
 }
 
@@ -48,6 +49,7 @@ void Obstacles::remove(Handle h) {
   shapes_[i] = shapes_.back();
   shapes_.pop_back();
   dirty_ = true;
+  ++version_;
 }
 
 const ObstacleShape& Obstacles::operator[](Handle h) const {

@@ -29,7 +29,8 @@ struct ParticleStep {
   Vec3<T> gravity;
   T dt, damping, drag, restitution, friction, threshold, skin, limit;
   int maxBounces;
-  bool forces;  // read the force fields, or drag is on: a depends on more than gravity
+  bool forces;               // read the force fields, or drag is on: a depends on more than gravity
+  bool pushOutFirst = true;  // core::ParticleStepParams::pushOutFirst
 };
 
 using core::ParticleCounts;
@@ -282,7 +283,9 @@ void rest(const ParticleStep<T>& p, const Vec3<T>& n, T tau, Vec3<T>& v, Vec3<T>
   a = at > f ? Vec3<T>(a * (T(1) - f / at)) : Vec3<T>::Zero();
 }
 
-// One particle's step: forces, damping, integration, then the path x -> x' against the obstacles.
+// One particle's step: the push out of an obstacle it starts in (looked for only when one may be:
+// ParticleStepParams::pushOutFirst), forces, damping, integration, then the path x -> x' against
+// the obstacles.
 // The first surface the path enters ends it there: a fast impact bounces (respond) and the path
 // goes on from the contact for the time left; a slow one (at most the restitution threshold) is a
 // resting contact, under rest() for the time left, and if the particle was already touching the
@@ -293,10 +296,10 @@ template <class T>
 void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Vec3<T>& x,
                   Vec3<T>& v, T invMass, const Vec3<T>& force, ParticleCounts& counts) {
   if (!(invMass > 0)) return;  // pinned
+  if (p.pushOutFirst) pushOut(obstacles, p.skin, x, v, counts);
   const Vec3<T> xIn = x, vIn = v;
   Vec3<T> a = p.gravity;
   if (p.forces) a = a + (force - v * p.drag) * invMass;
-  pushOut(obstacles, p.skin, x, v, counts);
   const auto constant = [&](const Vec3<T>&) { return a; };
   Vec3<T> x0 = x, v0 = v * p.damping, x1 = x0, v1 = v0;
   T tau = p.dt;
@@ -343,10 +346,12 @@ void stepParticle(const ParticleStep<T>& p, const ObstacleSetT<T>& obstacles, Ve
   }
   // A path that ends within rounding of a surface it runs along (its entry computed just past
   // its end) may end a hair inside: no particle ends a step inside an obstacle.
+  const std::uint64_t before = counts.pushedOut;
   pushOut(obstacles, p.skin, x1, v1, counts);
+  counts.endPushed += counts.pushedOut - before;
   // A step that would take the particle past the supported range (a force far beyond any real
-  // world's, or a NaN from one) is not taken: it stays as it was, counted, and nothing
-  // non-finite enters the streams.
+  // world's, or a NaN from one) is not taken: it stays as it was (pushed out, if it was inside),
+  // counted, and nothing non-finite enters the streams.
   bool inRange = true;
   for (int k = 0; k < 3; ++k)
     inRange = inRange && std::abs(x1[k]) <= p.limit && std::abs(v1[k]) <= p.limit;  // NaN: false
@@ -377,7 +382,8 @@ ParticleStep<T> particleStep(const core::ParticleStepParams& p) {
           T(p.skin),
           T(p.limit),
           p.maxBounces,
-          p.forces};
+          p.forces,
+          p.pushOutFirst};
 }
 
 }  // namespace simdphys::reference
