@@ -23,4 +23,11 @@ ParticlesD toDouble(const ParticleSystem& system);
 // settings and the world's obstacles (brought up to date first); what they met.
 core::ParticleCounts stepDouble(ParticlesD& particles, const ParticleSystem& system, World& world);
 
+// One world step of particles at x, v (in place; the system's inverse masses and forces) by the
+// float reference, testing every obstacle of the world in order, without its tree: what the
+// world's answers must equal, bit for bit. Compiled in the library, so that a test needs no
+// instance of the reference step of its own.
+core::ParticleCounts stepEveryObstacle(std::vector<Vec3f>& x, std::vector<Vec3f>& v,
+                                       const ParticleSystem& system, const World& world);
+
 }  // namespace simdphys::test

@@ -54,4 +54,24 @@ core::ParticleCounts stepDouble(ParticlesD& p, const ParticleSystem& system, Wor
   return counts;
 }
 
+core::ParticleCounts stepEveryObstacle(std::vector<Vec3f>& x, std::vector<Vec3f>& v,
+                                       const ParticleSystem& system, const World& world) {
+  const WorldSettings& w = world.settings();
+  const float damping = w.substeps == 1
+                            ? system.settings().damping
+                            : std::pow(system.settings().damping, 1.0f / float(w.substeps));
+  const reference::ParticleStep<float> step = reference::particleStep<float>(
+      detail::stepParams(system, w.timeStep / float(w.substeps), damping));
+  const reference::ObstacleSetT<float> all(world.obstacles().shapes());
+  const auto& f = [&](std::size_t k) { return system.field(k).view(); };
+  core::ParticleCounts counts;
+  for (int sub = 0; sub < w.substeps; ++sub)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const Vec3f force(f(fields::Particle::fx)[i], f(fields::Particle::fy)[i],
+                        f(fields::Particle::fz)[i]);
+      reference::stepParticle<float>(step, all, x[i], v[i], system.invMass()[i], force, counts);
+    }
+  return counts;
+}
+
 }  // namespace simdphys::test
