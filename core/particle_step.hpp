@@ -31,11 +31,11 @@ struct ParticleStepParams {
 
 // One obstacle (obstacles.hpp), in the order the obstacles are tested.
 struct ObstacleRow {
-  enum Kind : std::uint32_t { kPlane, kSphere, kAabb, kObb };
+  enum Kind : std::uint32_t { kPlane, kSphere, kAabb, kObb, kMesh };
   Kind kind;
   // kPlane: normal (0..2), d (3). kSphere: centre (0..2), radius (3). kAabb: min (0..2), max
   // (3..5). kObb: centre (0..2), half extents (3..5), axes (6..14), column c (the box's local
-  // axis c) at 6 + 3 c, as ObbT::axes.col(c).
+  // axis c) at 6 + 3 c, as ObbT::axes.col(c). kMesh: none (ObstacleQueries::meshEntry).
   float v[15];
   // A world box around the solid (infinite for a plane), grown by a margin far above the rounding
   // of the exact tests (a thousandth of the solid's size and place, where the rounding is some
@@ -44,15 +44,21 @@ struct ObstacleRow {
   float lo[3], hi[3];
 };
 
-// Many obstacles: the rows near a box come from the caller's tree (Obstacles::tree()) rather
-// than from a walk over every row.
-struct ObstacleTree {
+// What the kernels ask of the caller's obstacles. With many of them, the rows near a box come
+// from their tree (Obstacles::tree()) rather than from a walk over every row; a mesh's triangles
+// are tested by the caller, lane by lane, with the reference's test.
+struct ObstacleQueries {
   const void* context;
-  // Sets `rows` to every plane's row and those whose boxes meet any of the n boxes [lo, hi], in
-  // ascending order. lo and hi hold the x coordinates of the n boxes, then the y, then the z; a
-  // box with lo > hi is empty.
+  // Null without a tree. Sets `rows` to every plane's row and those whose boxes meet any of the
+  // n boxes [lo, hi], in ascending order. lo and hi hold the x coordinates of the n boxes, then
+  // the y, then the z; a box with lo > hi is empty.
   void (*near)(const void* context, const float* lo, const float* hi, std::size_t n,
                std::vector<std::uint32_t>& rows);
+  // Null without meshes. For each of n paths x0 -> x0 + dir whose `live` is non-zero, the first
+  // entry into the mesh of row `row`: `hit` 1 or 0, the fraction s of the path and the normal
+  // (x, y, z blocks of n, as x0 and dir).
+  void (*meshEntry)(const void* context, std::uint32_t row, std::size_t n, const float* x0,
+                    const float* dir, const float* live, float* s, float* normal, float* hit);
 };
 
 // What the particles met (StepProfile's counters), summed over a kernel call.

@@ -10,6 +10,7 @@ inline float Zero(ScalarLane) { return 0.0f; }
 inline std::size_t Lanes(ScalarLane) { return 1; }
 inline bool FirstN(ScalarLane, std::size_t n) { return n > 0; }
 inline float LoadU(ScalarLane, const float* p) { return *p; }
+inline float Load(ScalarLane, const float* p) { return *p; }
 inline void StoreU(float x, ScalarLane, float* p) { *p = x; }
 inline void Store(float x, ScalarLane, float* p) { *p = x; }
 inline float Sub(float a, float b) { return a - b; }

@@ -263,15 +263,16 @@ extern const Kernel<void(const RectsView&v, std::vector<Pair>&out)> bruteRects2d
 
 // ---- particles (particles.hpp, src/particles/step.cpp) ------------------------------------------
 // One substep of the particles [begin, end) (begin a multiple of 16), in place, against every
-// obstacle row in order (with a tree, the rows it finds near each vector's paths): bit for bit what
+// obstacle row in order (with a tree, the rows it finds near each vector's paths; a mesh's
+// triangles through `queries`, lane by lane): bit for bit what
 // the float reference's stepParticle gives each particle (src/reference/particles/step-inl.hpp),
 // and what they met, counted as it counts. Whole vectors are read and written up to end rounded up
 // to a vector (within `padded`); lanes past `end` and pinned ones (inverse mass not > 0) are
 // written back unchanged.
-extern const Kernel<core::ParticleCounts(const ParticlesView&particles, std::size_t begin,
-                                         std::size_t end, const core::ObstacleRow*obstacles,
-                                         std::size_t obstacleCount, const core::ObstacleTree*tree,
-                                         const core::ParticleStepParams&params)>
+extern const Kernel<core::ParticleCounts(
+    const ParticlesView&particles, std::size_t begin, std::size_t end,
+    const core::ObstacleRow*obstacles, std::size_t obstacleCount,
+    const core::ObstacleQueries*queries, const core::ParticleStepParams&params)>
     stepParticles, stepParticlesAutovec;
 
 // ---- meshes: rays against a mesh's BVH (mesh_bvh.hpp, bvh_ray.cpp) ----------------------------

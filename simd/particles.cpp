@@ -224,17 +224,19 @@ struct Row {
   }
 };
 
-// The rows broadcast once per call, in memory aligned for vectors, and with kTree the tree that
-// finds those near a vector's paths when there are many. (A step with the tree's call in it, even
-// untaken, keeps fewer vectors in registers: the step is compiled once without it.)
-template <class D, bool kTree>
+// The rows broadcast once per call, in memory aligned for vectors, and with kCalls the caller's
+// queries: the tree that finds the rows near a vector's paths when there are many, the meshes'
+// triangle tests. (A step with their calls in it, even untaken, keeps fewer vectors in registers:
+// the step is compiled once without them.)
+template <class D, bool kCalls>
 class Rows {
  public:
-  Rows(D d, const core::ObstacleRow* rows, std::size_t n, const core::ObstacleTree* tree)
+  Rows(D d, const core::ObstacleRow* rows, std::size_t n, const core::ObstacleQueries* queries)
       : rows_(hwy::AllocateAligned<Row<D>>(n > 0 ? n : 1)),
-        tree_(tree),
+        queries_(queries),
         all_(n),
-        boxes_(hwy::AllocateAligned<float>(6 * Lanes(d))) {
+        width_(Lanes(d)),
+        lanes_(hwy::AllocateAligned<float>(kLaneFields * Lanes(d))) {
     for (std::size_t i = 0; i < n; ++i) new (&rows_[i]) Row<D>(d, RowData(rows[i]));
     for (std::size_t i = 0; i < n; ++i) all_[i] = std::uint32_t(i);
   }
@@ -246,25 +248,49 @@ class Rows {
   // The caller culls each lane with Row::near, as the reference's ObstacleSetT::near does.
   template <class V = LaneOf<D>>
   HWY_INLINE std::span<const std::uint32_t> near(D d, MaskOf<D> live, const PathBox<V>& path) {
-    if (!kTree) return all_;
+    if (!kCalls || !queries_->near) return all_;
     const V inf = Set(d, kInf);
     auto finite = Not(live);
     for (int k = 0; k < 3; ++k) {
       finite = Or(finite, And(Lt(Abs(path.lo[k]), inf), Lt(Abs(path.hi[k]), inf)));
-      Store(IfThenElse(live, path.lo[k], inf), d, boxes_.get() + k * Lanes(d));
-      Store(IfThenElse(live, path.hi[k], Neg(inf)), d, boxes_.get() + (3 + k) * Lanes(d));
+      Store(IfThenElse(live, path.lo[k], inf), d, lane(k));
+      Store(IfThenElse(live, path.hi[k], Neg(inf)), d, lane(3 + k));
     }
     if (!AllTrue(d, finite)) return all_;
-    tree_->near(tree_->context, boxes_.get(), boxes_.get() + 3 * Lanes(d), Lanes(d), ids_);
+    queries_->near(queries_->context, lane(0), lane(3), Lanes(d), ids_);
     return ids_;
+  }
+
+  // Whether the rows come from the tree (ObstacleSetT::near's rule then holds for push-outs).
+  bool tree() const { return kCalls && queries_->near; }
+
+  // The first entry of the lanes of `live` into mesh row i: the caller's test, lane by lane.
+  template <class V = LaneOf<D>>
+  HWY_NOINLINE Surface<D> meshEntry(D d, std::uint32_t i, MaskOf<D> live, const Vec3L<V>& x0,
+                                    const Vec3L<V>& dir) {
+    const V zero = Zero(d), one = Set(d, 1.0f);
+    for (int k = 0; k < 3; ++k) Store(x0[k], d, lane(k)), Store(dir[k], d, lane(3 + k));
+    Store(IfThenElse(live, one, zero), d, lane(6));
+    queries_->meshEntry(queries_->context, i, Lanes(d), lane(0), lane(3), lane(6), lane(7), lane(8),
+                        lane(11));
+    Surface<D> e;
+    e.hit = And(live, Gt(Load(d, lane(11)), zero));
+    e.s = IfThenElse(e.hit, Load(d, lane(7)), zero);
+    for (int k = 0; k < 3; ++k) e.normal[k] = IfThenElse(e.hit, Load(d, lane(8 + k)), zero);
+    return e;
   }
 
  private:
   static constexpr float kInf = std::numeric_limits<float>::infinity();
+  // Lanes handed to the queries: a box (lo x, y, z, hi x, y, z) or a path (x0, dir, live) and
+  // its entry (s, normal, hit).
+  static constexpr std::size_t kLaneFields = 12;
+  float* lane(std::size_t k) { return lanes_.get() + k * width_; }
   hwy::AlignedFreeUniquePtr<Row<D>[]> rows_;
-  const core::ObstacleTree* tree_;
+  const core::ObstacleQueries* queries_;
   std::vector<std::uint32_t> all_, ids_;
-  hwy::AlignedFreeUniquePtr<float[]> boxes_;  // the lanes' boxes for the tree: lo x, y, z, hi
+  std::size_t width_;  // Lanes(d)
+  hwy::AlignedFreeUniquePtr<float[]> lanes_;
 };
 
 // The unit vector along `axis` (a lane's 0, 1 or 2) of three, with the sign of `positive`.
@@ -282,6 +308,9 @@ HWY_INLINE Surface<D> exitOf(D d, const Params<D>& p, const Row<D>& row, MaskOf<
                              const Vec3L<V>& x) {
   Surface<D> e;
   switch (row.kind) {
+    case core::ObstacleRow::kMesh:  // a surface: nothing is inside
+      e.hit = Lt(p.one, p.zero);
+      break;
     case core::ObstacleRow::kPlane: {
       const V f = dot(row.a, x) + row.w;
       e.hit = And(live, Lt(f, p.zero));
@@ -374,6 +403,9 @@ HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, MaskOf
                               const Vec3L<V>& x0, const Vec3L<V>& dir) {
   Surface<D> e;
   switch (row.kind) {
+    case core::ObstacleRow::kMesh:  // Rows::meshEntry's
+      e.hit = Lt(p.one, p.zero);
+      break;
     case core::ObstacleRow::kPlane: {
       const V f0 = dot(row.a, x0) + row.w;
       const V rate = dot(row.a, dir);
@@ -441,8 +473,8 @@ HWY_INLINE Surface<D> entryOf(D d, const Params<D>& p, const Row<D>& row, MaskOf
 // pushOut(): the `live` lanes strictly inside a row, in order, go to `skin` outside it and lose
 // the part of v into its surface. The rows are those near where the lanes start (with a tree, as
 // the reference finds them); without a tree, those near where they are when the row comes up.
-template <class D, bool kTree, class V = LaneOf<D>>
-HWY_INLINE void pushOut(D d, const Params<D>& p, Rows<D, kTree>& rows, MaskOf<D> live, Vec3L<V>& x,
+template <class D, bool kCalls, class V = LaneOf<D>>
+HWY_INLINE void pushOut(D d, const Params<D>& p, Rows<D, kCalls>& rows, MaskOf<D> live, Vec3L<V>& x,
                         Vec3L<V>& v, core::ParticleCounts& counts) {
   if (AllFalse(d, live)) return;
   PathBox<V> at = pathBox(p, x, x);
@@ -453,7 +485,7 @@ HWY_INLINE void pushOut(D d, const Params<D>& p, Rows<D, kTree>& rows, MaskOf<D>
     const auto in = e.hit;
     if (AllFalse(d, in)) continue;
     x = IfThenElse(in, e.point + e.normal * p.skin, x);
-    if (!kTree) at = pathBox(p, x, x);
+    if (!rows.tree()) at = pathBox(p, x, x);
     const V vn = dot(v, e.normal);
     v = IfThenElse(And(in, Lt(vn, p.zero)), v - e.normal * vn, v);
     counts.pushedOut += CountTrue(d, in);
@@ -496,9 +528,9 @@ HWY_INLINE void rest(const Params<D>& p, MaskOf<D> m, const Vec3L<V>& n, V tau, 
 }
 
 // stepParticle() for the lanes at [i, i + lanes) below `end`.
-template <class D, bool kTree>
+template <class D, bool kCalls>
 HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::size_t i,
-                          std::size_t end, Rows<D, kTree>& rows, core::ParticleCounts& counts) {
+                          std::size_t end, Rows<D, kCalls>& rows, core::ParticleCounts& counts) {
   using V = LaneOf<D>;
   namespace F = fields;
   const auto load3 = [&](std::size_t f) {
@@ -527,7 +559,14 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     for (const std::uint32_t i : rows.near(d, live, path)) {
       const Row<D>& row = rows[i];
       if (AllFalse(d, And(live, row.near(path)))) continue;
-      const Surface<D> e = entryOf(d, p, row, live, x0, dir);
+      Surface<D> e;
+      if constexpr (kCalls) {
+        e = row.kind == core::ObstacleRow::kMesh
+                ? rows.meshEntry(d, i, And(live, row.near(path)), x0, dir)
+                : entryOf(d, p, row, live, x0, dir);
+      } else {
+        e = entryOf(d, p, row, live, x0, dir);
+      }
       const auto better = And(e.hit, Or(Not(found), Lt(e.s, first)));
       first = IfThenElse(better, e.s, first);
       normal = IfThenElse(better, e.normal, normal);
@@ -584,9 +623,9 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
 // The step's first push-out (pushOut()) for the lanes at [i, i + lanes) below `end`, as a pass
 // of its own: the step runs it only when a particle may be inside (ParticleStepParams), and the
 // fused step is faster without its code.
-template <class D, bool kTree>
+template <class D, bool kCalls>
 HWY_INLINE void pushOutLanes(D d, const Params<D>& p, const ParticlesView& s, std::size_t i,
-                             std::size_t end, Rows<D, kTree>& rows, core::ParticleCounts& counts) {
+                             std::size_t end, Rows<D, kCalls>& rows, core::ParticleCounts& counts) {
   using V = LaneOf<D>;
   namespace F = fields;
   const V w = LoadU(d, s[F::Particle::invMass] + i);
@@ -604,13 +643,13 @@ HWY_INLINE void pushOutLanes(D d, const Params<D>& p, const ParticlesView& s, st
   }
 }
 
-template <bool kTree, class D>
+template <bool kCalls, class D>
 HWY_NOINLINE core::ParticleCounts stepRange(D d, const ParticlesView& s, std::size_t begin,
                                             std::size_t end, const core::ObstacleRow* rows,
-                                            std::size_t n, const core::ObstacleTree* tree,
+                                            std::size_t n, const core::ObstacleQueries* queries,
                                             const core::ParticleStepParams& params) {
   const Params<D> p(d, params);
-  Rows<D, kTree> prepared(d, rows, n, tree);
+  Rows<D, kCalls> prepared(d, rows, n, queries);
   core::ParticleCounts counts;
   if (p.pushOutFirst)
     for (std::size_t i = begin; i < end; i += Lanes(d))
@@ -622,26 +661,26 @@ HWY_NOINLINE core::ParticleCounts stepRange(D d, const ParticlesView& s, std::si
 template <class D>
 core::ParticleCounts stepRange(D d, const ParticlesView& s, std::size_t begin, std::size_t end,
                                const core::ObstacleRow* rows, std::size_t n,
-                               const core::ObstacleTree* tree,
+                               const core::ObstacleQueries* queries,
                                const core::ParticleStepParams& params) {
-  return tree ? stepRange<true>(d, s, begin, end, rows, n, tree, params)
-              : stepRange<false>(d, s, begin, end, rows, n, tree, params);
+  return queries ? stepRange<true>(d, s, begin, end, rows, n, queries, params)
+                 : stepRange<false>(d, s, begin, end, rows, n, queries, params);
 }
 
 core::ParticleCounts StepParticles(const ParticlesView& s, std::size_t begin, std::size_t end,
                                    const core::ObstacleRow* rows, std::size_t n,
-                                   const core::ObstacleTree* tree,
+                                   const core::ObstacleQueries* queries,
                                    const core::ParticleStepParams& params) {
-  return stepRange(hn::ScalableTag<float>(), s, begin, end, rows, n, tree, params);
+  return stepRange(hn::ScalableTag<float>(), s, begin, end, rows, n, queries, params);
 }
 
 // ---- baseline ----------------------------------------------------------------------------------
 // The same step as a plain loop over the particles, a float per lane, left to the compiler.
 core::ParticleCounts StepParticlesAutovec(const ParticlesView& s, std::size_t begin,
                                           std::size_t end, const core::ObstacleRow* rows,
-                                          std::size_t n, const core::ObstacleTree* tree,
+                                          std::size_t n, const core::ObstacleQueries* queries,
                                           const core::ParticleStepParams& params) {
-  return stepRange(ScalarLane(), s, begin, end, rows, n, tree, params);
+  return stepRange(ScalarLane(), s, begin, end, rows, n, queries, params);
 }
 
 SIMDPHYS_TARGET_END();

@@ -59,6 +59,25 @@ void addObstacles(Obstacles& o, std::mt19937& rng, int extra) {
   }
 }
 
+// A bumpy sheet of 8 x 8 quads over [-2.5, 2.5]^2 around y = 0.3, tilted: grazed, crossed along
+// its shared edges and hit from both sides by the random particles.
+MeshObstacle bumpySheet() {
+  Mesh mesh;
+  constexpr int kQuads = 8;
+  for (int i = 0; i <= kQuads; ++i)
+    for (int k = 0; k <= kQuads; ++k) {
+      const float x = -2.5f + 5.0f * float(i) / kQuads, z = -2.5f + 5.0f * float(k) / kQuads;
+      mesh.vertices.emplace_back(x, 0.3f + 0.2f * x + 0.15f * float((i * 7 + k * 3) % 4), z);
+    }
+  const auto at = [](int i, int k) { return std::uint32_t(i * (kQuads + 1) + k); };
+  for (int i = 0; i < kQuads; ++i)
+    for (int k = 0; k < kQuads; ++k) {
+      mesh.triangles.push_back({{at(i, k), at(i + 1, k), at(i + 1, k + 1)}});
+      mesh.triangles.push_back({{at(i, k), at(i + 1, k + 1), at(i, k + 1)}});
+    }
+  return std::make_shared<const MeshBvh>(mesh);
+}
+
 // Random particles in and around the obstacles, some fast (several bounces per step), some pinned,
 // some with a force.
 void addRandomParticles(ParticleSystem& s, std::mt19937& rng, int n) {
@@ -125,6 +144,7 @@ struct Case {
   ParticleSettings settings;
   bool hard;
   bool many = false;  // 60 bounded obstacles more: found through the obstacles' tree
+  bool mesh = false;  // and a triangle mesh: tested lane by lane by the reference's test
 };
 
 std::vector<Case> cases() {
@@ -160,10 +180,12 @@ Scene makeScene(const Case& c, int threads, int particles, std::uint32_t seed) {
   }
   // At most kFewObstacles bounded ones, each tested by every vector; or many, through the tree.
   addObstacles(s.world.obstacles(), rng, c.many ? 60 : c.hard ? 1 : 4);
+  if (c.mesh) s.world.obstacles().add(bumpySheet());
   std::size_t bounded = 0;
   for (const ObstacleShape& o : s.world.obstacles().shapes())
     bounded += !std::holds_alternative<Plane>(o);
-  EXPECT_EQ(bounded > Obstacles::kFewObstacles, c.many);
+  if (c.many) EXPECT_GT(bounded, Obstacles::kFewObstacles);
+  if (!c.many && !c.mesh) EXPECT_LE(bounded, Obstacles::kFewObstacles);
   addRandomParticles(p, rng, particles);
   return s;
 }
@@ -287,6 +309,22 @@ TEST_P(ParticleKernel, SkippingTheFirstPushOutChangesNoBit) {
       if (HasFailure()) return;
     }
   }
+}
+
+// A mesh among the obstacles: its triangles are tested lane by lane by the reference's test from
+// within the kernel, with few obstacles and with many.
+TEST_P(ParticleKernel, MeshesMatchTheReference) {
+  StepProfile all;
+  for (const int k : {0, 1, 5, 7}) {
+    Case c = cases()[k];
+    c.mesh = true;
+    c.many = k == 7;
+    SCOPED_TRACE(c.name);
+    const StepProfile t = compareWithReference(c, 4, 600);
+    all.contacts += t.contacts, all.pushedOut += t.pushedOut;
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(all.contacts, 1000u);
 }
 
 // A world with no obstacles and one with particles only past the first vector's tail: the kernel

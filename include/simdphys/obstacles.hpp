@@ -56,8 +56,8 @@ class Obstacles {
   const Bvh* tree() const { return treeBuilt_ ? &tree_ : nullptr; }
   // Indices (into shapes()) of the bounded obstacles, in order, and of the planes.
   std::span<const std::uint32_t> bounded() const { return bounded_; }
-  // With the tree, the boxes it holds, one per bounded obstacle: a solid's grown past the
-  // rounding of the exact tests (no computed test meets it from outside), a mesh's vertices' box.
+  // With the tree, the boxes it holds, one per bounded obstacle: its box grown past the rounding
+  // of the exact tests (no computed test meets the obstacle from outside it).
   std::span<const Aabb> boxes() const { return boxes_; }
   std::span<const std::uint32_t> planes() const { return planes_; }
   void update();

@@ -24,12 +24,6 @@ core::View<F::Particle, float> ParticleStreams::view(ParticleSystem& s) {
   return v;
 }
 
-bool laneWide(const Obstacles& obstacles) {
-  for (const ObstacleShape& shape : obstacles.shapes())
-    if (std::holds_alternative<MeshObstacle>(shape)) return false;
-  return true;
-}
-
 reference::ObstacleSetT<float> obstacleSet(const Obstacles& o) {
   return reference::ObstacleSetT<float>(o.shapes(), o.tree(), o.bounded(), o.boxes(), o.planes());
 }
@@ -84,16 +78,16 @@ core::ParticleCounts stepParticles(ParticleSystem& system, const Obstacles& obst
   const reference::ObstacleSetT<float> set = obstacleSet(obstacles);
   const std::size_t parts = (v.count + kPartition - 1) / kPartition;
   std::vector<core::ParticleCounts> counts(parts);
-  // The path is read once, before the threads start. Obstacles the kernel cannot test lane-wide
-  // run the reference on every path; plainLoopsActive: the benchmarks' and tests' second baseline.
-  const bool reference = referencePathActive() || !laneWide(obstacles);
+  // The path is read once, before the threads start. plainLoopsActive: the benchmarks' and
+  // tests' second baseline.
+  const bool reference = referencePathActive();
   const auto& kernel = plainLoopsActive() ? simd::stepParticlesAutovec : simd::stepParticles;
-  const std::optional<core::ObstacleTree> tree = obstacleTree(obstacles);
+  const std::optional<core::ObstacleQueries> queries = obstacleQueries(obstacles);
   const auto run = [&](std::size_t part) {
     const std::size_t begin = part * kPartition, end = std::min(v.count, begin + kPartition);
     counts[part] = reference ? referenceRange(v, begin, end, set, params)
                              : kernel(v, begin, end, rows.data(), rows.size(),
-                                      tree ? &*tree : nullptr, params);
+                                      queries ? &*queries : nullptr, params);
   };
   if (parts > 1) {
     const int t = threads > 0 ? threads : omp_get_max_threads();

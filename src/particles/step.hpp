@@ -19,10 +19,6 @@ struct ParticleStreams {
   static std::uint64_t& outsideOf(ParticleSystem& system) { return system.outsideOf_; }
 };
 
-// Whether the kernels can test the obstacles lane-wide: any number (many found through the
-// obstacles' tree) but no meshes, whose triangles every path leaves to the reference.
-bool laneWide(const Obstacles& obstacles);
-
 // A system's settings as the kernels take them, for one substep of length dt with `damping` the
 // substep's share of the per-step factor.
 core::ParticleStepParams stepParams(const ParticleSystem& system, float dt, float damping);

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "simd/kernels.hpp"
+#include "src/reference/particles/step-inl.hpp"
 
 namespace simdphys::detail {
 
@@ -30,6 +31,9 @@ void growBox(core::ObstacleRow& r) {
         center[k] = v[k];
         reach[k] =
             std::abs(v[6 + k]) * v[3] + std::abs(v[9 + k]) * v[4] + std::abs(v[12 + k]) * v[5];
+        break;
+      case core::ObstacleRow::kMesh:  // v holds the vertices' box, min then max
+        center[k] = 0.5f * (v[k] + v[3 + k]), reach[k] = 0.5f * (v[3 + k] - v[k]);
         break;
     }
   }
@@ -61,9 +65,25 @@ void treeNear(const void* context, const float* lo, const float* hi, std::size_t
   std::sort(rows.begin(), rows.end());
 }
 
+// The reference's entry into a mesh (step-inl.hpp), lane by lane.
+void meshEntry(const void* context, std::uint32_t row, std::size_t n, const float* x0,
+               const float* dir, const float* live, float* s, float* normal, float* hit) {
+  const Obstacles& o = *static_cast<const Obstacles*>(context);
+  const MeshObstacle& mesh = std::get<MeshObstacle>(o.shapes()[row]);
+  for (std::size_t i = 0; i < n; ++i) {
+    hit[i] = 0;
+    if (live[i] == 0) continue;
+    const Vec3f from(x0[i], x0[n + i], x0[2 * n + i]), d(dir[i], dir[n + i], dir[2 * n + i]);
+    const auto e = reference::entryOf<float>(mesh, from, d);
+    if (!e) continue;
+    hit[i] = 1, s[i] = e->s;
+    for (int k = 0; k < 3; ++k) normal[k * n + i] = e->normal[k];
+  }
+}
+
 }  // namespace
 
-std::optional<core::ObstacleRow> rowOf(const ObstacleShape& shape) {
+core::ObstacleRow rowOf(const ObstacleShape& shape) {
   core::ObstacleRow r{};
   const auto put = [&](int at, const Vec3f& v) {
     for (int k = 0; k < 3; ++k) r.v[at + k] = v[k];
@@ -78,7 +98,10 @@ std::optional<core::ObstacleRow> rowOf(const ObstacleShape& shape) {
     r.kind = core::ObstacleRow::kObb, put(0, o->center), put(3, o->halfExtents);
     for (int c = 0; c < 3; ++c) put(6 + 3 * c, o->axes.col(c));
   } else {
-    return std::nullopt;
+    Aabb box{Vec3f::Constant(kMaxCoordinate), Vec3f::Constant(-kMaxCoordinate)};
+    for (const Vec3f& v : std::get<MeshObstacle>(shape)->mesh().vertices)
+      box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
+    r.kind = core::ObstacleRow::kMesh, put(0, box.min), put(3, box.max);
   }
   growBox(r);
   return r;
@@ -86,14 +109,17 @@ std::optional<core::ObstacleRow> rowOf(const ObstacleShape& shape) {
 
 std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles) {
   std::vector<core::ObstacleRow> rows;
-  for (const ObstacleShape& shape : obstacles.shapes())
-    if (const auto r = rowOf(shape)) rows.push_back(*r);
+  for (const ObstacleShape& shape : obstacles.shapes()) rows.push_back(rowOf(shape));
   return rows;
 }
 
-std::optional<core::ObstacleTree> obstacleTree(const Obstacles& obstacles) {
-  if (!obstacles.tree()) return std::nullopt;
-  return core::ObstacleTree{&obstacles, treeNear};
+std::optional<core::ObstacleQueries> obstacleQueries(const Obstacles& obstacles) {
+  core::ObstacleQueries q{&obstacles, nullptr, nullptr};
+  if (obstacles.tree()) q.near = treeNear;
+  for (const ObstacleShape& shape : obstacles.shapes())
+    if (std::holds_alternative<MeshObstacle>(shape)) q.meshEntry = meshEntry;
+  if (!q.near && !q.meshEntry) return std::nullopt;
+  return q;
 }
 
 }  // namespace simdphys::detail

@@ -10,13 +10,13 @@
 
 namespace simdphys::detail {
 
-// An obstacle's row; a mesh has none.
-std::optional<core::ObstacleRow> rowOf(const ObstacleShape& shape);
+// An obstacle's row, with its grown box (for a mesh, its vertices' box grown).
+core::ObstacleRow rowOf(const ObstacleShape& shape);
 
-// Every obstacle's row, in order (meshes left out).
+// Every obstacle's row, in order: the row index is the obstacle's.
 std::vector<core::ObstacleRow> obstacleRows(const Obstacles& obstacles);
 
-// The obstacles' tree as the kernels query it; null without a tree.
-std::optional<core::ObstacleTree> obstacleTree(const Obstacles& obstacles);
+// What the kernels ask of these obstacles (their tree, their meshes); nothing if neither.
+std::optional<core::ObstacleQueries> obstacleQueries(const Obstacles& obstacles);
 
 }  // namespace simdphys::detail

@@ -23,15 +23,11 @@ void validateShape(const ObstacleShape& shape, const std::string& where) {
       shape);
 }
 
-// The box of a bounded obstacle: a solid's grown box (core::ObstacleRow::lo: no computed test
-// meets it from outside), a mesh's vertices' box.
+// The box of a bounded obstacle, grown (core::ObstacleRow::lo: no computed test meets the
+// obstacle from outside it).
 Aabb bounds(const ObstacleShape& shape) {
-  if (const auto row = detail::rowOf(shape))
-    return {Vec3f(row->lo[0], row->lo[1], row->lo[2]), Vec3f(row->hi[0], row->hi[1], row->hi[2])};
-  Aabb box{Vec3f::Constant(kMaxCoordinate), Vec3f::Constant(-kMaxCoordinate)};
-  for (const Vec3f& v : std::get<MeshObstacle>(shape)->mesh().vertices)
-    box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
-  return box;
+  const core::ObstacleRow row = detail::rowOf(shape);
+  return {Vec3f(row.lo[0], row.lo[1], row.lo[2]), Vec3f(row.hi[0], row.hi[1], row.hi[2])};
 }
 
 }  // namespace
