@@ -1,5 +1,8 @@
 #include "particles.hpp"
 
+#include <cmath>
+#include <memory>
+
 #include "simdphys/math.hpp"
 #include "workloads.hpp"
 
@@ -26,6 +29,23 @@ void addParticleField(World& world) {
           break;
       }
     }
+}
+
+void addParticleTerrain(World& world) {
+  constexpr int kQuads = 64;
+  Mesh mesh;
+  for (int i = 0; i <= kQuads; ++i)
+    for (int k = 0; k <= kQuads; ++k) {
+      const double x = -10 + 20.0 * i / kQuads, z = -10 + 20.0 * k / kQuads;
+      mesh.vertices.emplace_back(x, 0.3 + 0.25 * std::sin(0.9 * x) * std::cos(0.7 * z), z);
+    }
+  const auto at = [](int i, int k) { return std::uint32_t(i * (kQuads + 1) + k); };
+  for (int i = 0; i < kQuads; ++i)
+    for (int k = 0; k < kQuads; ++k) {
+      mesh.triangles.push_back({{at(i, k), at(i, k + 1), at(i + 1, k + 1)}});
+      mesh.triangles.push_back({{at(i, k), at(i + 1, k + 1), at(i + 1, k)}});
+    }
+  world.obstacles().add(std::make_shared<const MeshBvh>(mesh));
 }
 
 ParticleWorkload makeParticleWorkload(std::size_t n) {
