@@ -153,18 +153,30 @@ requires detail::rays::Solid<S, T> std::optional<Entry<T>> entryOf(const S& soli
   return Entry<T>{h->t, h->normal};
 }
 
-// A mesh's triangles are two-sided: the path meets the first it crosses (ties: the lower id),
-// found through the mesh's own tree.
+// A mesh's triangles are two-sided: the path meets the first it crosses, found by the mesh's own
+// closest-hit raycast along it (MeshBvh: within 1e-6 relative of the nearest, the lowest id; the
+// same bits on every path), with hitTriangle's normal turned against the path. In double (the
+// truth the float paths are measured against) the same through the triangles whose bounds meet
+// the path's, the lowest id winning exact ties only.
 template <class T>
 std::optional<Entry<T>> entryOf(const MeshObstacle& mesh, const Vec3<T>& x0, const Vec3<T>& d) {
-  const Vec3<T> x1 = x0 + d;
-  std::optional<Entry<T>> first;
-  for (std::uint32_t id : mesh->overlapping(outwardBox<T>(x0.cwiseMin(x1), x0.cwiseMax(x1)))) {
-    const auto h = detail::rays::hitTriangle(cast<T>(mesh->mesh().triangle(id)),
-                                             WatertightRayT<T>(x0, d), T(1));
-    if (h && (!first || h->t < first->s)) first = Entry<T>{h->t, h->normal};
+  if constexpr (std::is_same_v<T, float>) {
+    const ElementHit h = mesh->raycast(Ray{x0, d}, 1.0f);
+    if (!h.hit()) return std::nullopt;
+    const Vec3d wide = detail::rays::triangleNormalWide(mesh->mesh().triangle(h.index));
+    Vec3f n = detail::rays::unitOr<double>(wide, Vec3d::Zero()).cast<float>();  // it has area
+    if (n.dot(d) > 0) n = -n;
+    return Entry<T>{h.t, n};
+  } else {
+    const Vec3<T> x1 = x0 + d;
+    std::optional<Entry<T>> first;
+    for (std::uint32_t id : mesh->overlapping(outwardBox<T>(x0.cwiseMin(x1), x0.cwiseMax(x1)))) {
+      const auto h = detail::rays::hitTriangle(cast<T>(mesh->mesh().triangle(id)),
+                                               WatertightRayT<T>(x0, d), T(1));
+      if (h && (!first || h->t < first->s)) first = Entry<T>{h->t, h->normal};
+    }
+    return first;
   }
-  return first;
 }
 
 // Whether the path from -> to may come near a box grown around an obstacle (ObstacleRow::lo):
