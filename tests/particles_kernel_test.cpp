@@ -184,8 +184,11 @@ Scene makeScene(const Case& c, int threads, int particles, std::uint32_t seed) {
   std::size_t bounded = 0;
   for (const ObstacleShape& o : s.world.obstacles().shapes())
     bounded += !std::holds_alternative<Plane>(o);
-  if (c.many) EXPECT_GT(bounded, Obstacles::kFewObstacles);
-  if (!c.many && !c.mesh) EXPECT_LE(bounded, Obstacles::kFewObstacles);
+  if (c.many) {
+    EXPECT_GT(bounded, Obstacles::kFewObstacles);
+  } else if (!c.mesh) {
+    EXPECT_LE(bounded, Obstacles::kFewObstacles);
+  }
   addRandomParticles(p, rng, particles);
   return s;
 }
