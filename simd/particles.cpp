@@ -556,13 +556,13 @@ HWY_INLINE void stepLanes(D d, const Params<D>& p, const ParticlesView& s, std::
     auto found = Lt(p.one, p.zero);
     V first = p.zero;
     Vec3L<V> normal{{p.zero, p.zero, p.zero}};
-    for (const std::uint32_t i : rows.near(d, live, path)) {
-      const Row<D>& row = rows[i];
+    for (const std::uint32_t r : rows.near(d, live, path)) {
+      const Row<D>& row = rows[r];
       if (AllFalse(d, And(live, row.near(path)))) continue;
       Surface<D> e;
       if constexpr (kCalls) {
         e = row.kind == core::ObstacleRow::kMesh
-                ? rows.meshEntry(d, i, And(live, row.near(path)), x0, dir)
+                ? rows.meshEntry(d, r, And(live, row.near(path)), x0, dir)
                 : entryOf(d, p, row, live, x0, dir);
       } else {
         e = entryOf(d, p, row, live, x0, dir);
