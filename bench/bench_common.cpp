@@ -76,8 +76,8 @@ void registerBestPath(const std::string& task, const std::string& method, std::s
 }
 
 void registerOnce(const std::string& task, const std::string& method, const std::string& label,
-                  std::size_t n, const Body& body) {
-  registerRun(name(task, method, label, n), label, "", body);
+                  std::size_t n, const Body& body, std::int64_t iterations) {
+  registerRun(name(task, method, label, n), label, "", body, iterations);
 }
 
 bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expected) {

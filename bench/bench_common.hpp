@@ -37,9 +37,9 @@ void registerPerPath(const std::string& task, const std::string& method, std::si
 void registerBestPath(const std::string& task, const std::string& method, std::size_t n,
                       const Body& body, std::int64_t iterations = 0);
 // Registers `body` once, under task/method/label/n: label is "peer" for another engine's run, or
-// "scalar" for code that has one path only (the octree's build).
+// "scalar" for code that has one path only (the octree's build). `iterations` as above.
 void registerOnce(const std::string& task, const std::string& method, const std::string& label,
-                  std::size_t n, const Body& body);
+                  std::size_t n, const Body& body, std::int64_t iterations = 0);
 
 // Marks the run as failed if `found` differs from `expected`, else records both.
 bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expected);
