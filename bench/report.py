@@ -34,6 +34,7 @@ TASKS = {
     "pairs2d": ("pairs/s", "banded_sweep"), "narrow2d": ("candidate pairs/s", None),
     "scene_build": ("boxes/s", None),
     "particles": ("particle steps/s", "w4"), "world_step": ("steps/s", None),
+    "cloth": ("spring updates/s", None),
     "integrate_projectile": ("particle steps/s", None),
     "integrate_oscillator": ("particle steps/s", None),
 }
@@ -158,6 +159,15 @@ SECTIONS = [
      "fraction of particles more than 1e-3 m from it), and the bytes/s as a share of the 512 "
      "MiB streaming read of this run. world_step: one step of an empty world, and of a world "
      "holding W4's obstacles and one particle (resting after the first second)."),
+    ("W3 cloth: a hanging cloth over a sphere", ["cloth"], "cloth",
+     "An n x n cloth (spacing 0.05, pinned at two corners, structural, shear and bend springs) "
+     "falling onto a sphere of radius 0.5 for 300 frames at 60 Hz, one iteration a frame. At "
+     "the end: the relative stretch of the structural springs (mean, 99th percentile, largest, "
+     "largest away from the pinned corners), and over every frame the deepest penetration into "
+     "the true sphere; finite: every position stayed finite; exploded: the frame where the "
+     "99th-percentile stretch first passed 1. Peer: Bullet's btSoftBody set up as its SoftDemo "
+     "cloth, at its default position iterations and at 10 and 30. The plot sets the mean "
+     "stretch against the time of a frame."),
     ("Integrators: error against cost on closed forms",
      ["integrate_projectile", "integrate_oscillator"], "integrators",
      "The four integrators at time steps 1/30 to 1/480 s. projectile: 10,000 particles thrown "
@@ -435,8 +445,68 @@ def integrator_plot(runs, tasks, title, filename):
     return True
 
 
+def cloth_runs(runs):
+    """The W3 runs that finished, by n then method."""
+    return sorted((r for r in runs.values() if r.task == "cloth" and r.ms and not r.error),
+                  key=lambda r: (r.n, r.path != "peer", r.method))
+
+
+def cloth_table(runs, tasks, markdown):
+    """Per run: ms a frame, spring updates a second, the stretch figures, the penetration,
+    finiteness and the explosion."""
+    head = ["method", "path", "n", "ms/frame", "spring updates/s", "stretch mean", "p99", "max",
+            "max off pins", "deepest in sphere", "finite", "exploded"]
+    body = []
+    for r in cloth_runs(runs):
+        c = r.counters
+        g = lambda k, f="{:.3g}": f.format(c[k]) if k in c else "-"  # noqa: E731
+        boom = (f"frame {c['exploded_frame']:.0f}" if c.get("exploded") else "no")
+        body.append([r.method, r.path, f"{r.n}", f"{r.ms:.3g}",
+                     eng(c.get("spring_updates_per_second", 0), "/s"), g("stretch_mean"),
+                     g("stretch_p99"), g("stretch_max"), g("stretch_max_away_from_pins"),
+                     g("penetration"), "yes" if c.get("finite", 0) == 1 else "NO", boom])
+    if not body:
+        return ""
+    if markdown:
+        return "\n".join(["| " + " | ".join(head) + " |", "|" + "---|" * 3 + "--:|" * 9]
+                         + ["| " + " | ".join(row) + " |" for row in body])
+    width = [max(len(row[i]) for row in [head] + body) for i in range(len(head))]
+    return "\n".join("  ".join(c.ljust(w) if i < 3 else c.rjust(w)
+                               for i, (c, w) in enumerate(zip(row, width))).rstrip()
+                     for row in [head] + body)
+
+
+def cloth_plot(runs, tasks, title, filename):
+    """Mean structural stretch against ms a frame (log-log), a panel per n; peers grey."""
+    rs = cloth_runs(runs)
+    ns = sorted({r.n for r in rs})
+    if not ns:
+        return False
+    fig, axes = plt.subplots(1, len(ns), figsize=(6 * len(ns), 4.5), squeeze=False)
+    for ax, n in zip(axes[0], ns):
+        for r in (r for r in rs if r.n == n):
+            peer = r.path == "peer"
+            y = max(r.counters.get("stretch_mean", 0), 1e-6)
+            ax.plot([r.ms], [y], marker="s" if peer else "o", color="grey" if peer else None,
+                    linestyle="none")
+            boom = " (exploded)" if r.counters.get("exploded") else ""
+            ax.annotate(f"{r.method}{boom}", (r.ms, y), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(f"n = {n}", fontsize=10)
+        ax.set_xlabel("ms a frame (lower is faster)", fontsize=9)
+        ax.set_ylabel("mean structural stretch at the end", fontsize=9)
+        ax.grid(alpha=0.3, which="both")
+    fig.suptitle(title, x=0.02, ha="left", fontsize=11)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    fig.savefig(filename, dpi=100)
+    plt.close(fig)
+    return True
+
+
 # Sections drawn by their own table and plot (by image name) rather than the generic ones.
-CUSTOM = {"integrators": (integrator_table, integrator_plot)}
+CUSTOM = {"integrators": (integrator_table, integrator_plot), "cloth": (cloth_table, cloth_plot)}
 
 
 def section_table(image, runs, tasks, markdown):
