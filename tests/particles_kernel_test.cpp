@@ -361,17 +361,23 @@ std::uint64_t stateHash(const ParticleSystem& s) {
 }
 
 TEST_P(ParticleKernel, SameStateAtOneAndTwoThreads) {
-  Case c = cases()[7];  // velocity Verlet with drag and friction
-  std::uint64_t hashes[2];
-  StepProfile profiles[2];
-  for (int threads : {1, 2}) {
-    Scene s = makeScene(c, threads, 3 * 4096 + 77, 11);  // four partitions, the last one short
-    for (int step = 0; step < 20; ++step) s.world.step();
-    hashes[threads - 1] = stateHash(s.world.particles(s.system));
-    profiles[threads - 1] = s.world.profile();
+  // Velocity Verlet with drag and friction, with few obstacles, and with many and a mesh (the
+  // kernel's calls into the library from both threads).
+  for (const bool calls : {false, true}) {
+    Case c = cases()[7];
+    c.many = c.mesh = calls;
+    SCOPED_TRACE(calls ? "many obstacles and a mesh" : "few obstacles");
+    std::uint64_t hashes[2];
+    StepProfile profiles[2];
+    for (int threads : {1, 2}) {
+      Scene s = makeScene(c, threads, 3 * 4096 + 77, 11);  // four partitions, the last one short
+      for (int step = 0; step < 20; ++step) s.world.step();
+      hashes[threads - 1] = stateHash(s.world.particles(s.system));
+      profiles[threads - 1] = s.world.profile();
+    }
+    EXPECT_EQ(hashes[0], hashes[1]);
+    expectSameCounts(profiles[0], profiles[1]);
   }
-  EXPECT_EQ(hashes[0], hashes[1]);
-  expectSameCounts(profiles[0], profiles[1]);
 }
 
 SIMDPHYS_ON_EVERY_PATH(ParticleKernel);
