@@ -387,6 +387,19 @@ def integrator_rows(runs):
     return dict(sorted(rows.items()))
 
 
+def small_table(head, body, left, markdown):
+    """A section's own table: the first `left` columns text, the others numbers (right-aligned);
+    Markdown or plain text."""
+    if markdown:
+        rule = "|" + "---|" * left + "--:|" * (len(head) - left)
+        return "\n".join(["| " + " | ".join(head) + " |", rule]
+                         + ["| " + " | ".join(row) + " |" for row in body])
+    width = [max(len(row[i]) for row in [head] + body) for i in range(len(head))]
+    return "\n".join("  ".join(c.ljust(w) if i < left else c.rjust(w)
+                               for i, (c, w) in enumerate(zip(row, width))).rstrip()
+                     for row in [head] + body)
+
+
 def integrator_table(runs, tasks, markdown):
     """Integrator, dt, and per case the ns a particle step and the error at the end."""
     head = ["integrator", "dt", "projectile ns/step", "projectile error (m)",
@@ -400,13 +413,7 @@ def integrator_table(runs, tasks, markdown):
             row += [cell(r, "ns_per_step", lambda v: f"{v:.2f}"),
                     cell(r, "error", lambda v: f"{v:.2e}")]
         body.append(row)
-    if markdown:
-        return "\n".join(["| " + " | ".join(head) + " |", "|---|---|--:|--:|--:|--:|"]
-                         + ["| " + " | ".join(row) + " |" for row in body])
-    width = [max(len(row[i]) for row in [head] + body) for i in range(len(head))]
-    return "\n".join("  ".join(c.ljust(w) if i < 2 else c.rjust(w)
-                               for i, (c, w) in enumerate(zip(row, width))).rstrip()
-                     for row in [head] + body)
+    return small_table(head, body, 2, markdown)
 
 
 def integrator_plot(runs, tasks, title, filename):
@@ -467,13 +474,7 @@ def cloth_table(runs, tasks, markdown):
                      g("penetration"), "yes" if c.get("finite", 0) == 1 else "NO", boom])
     if not body:
         return ""
-    if markdown:
-        return "\n".join(["| " + " | ".join(head) + " |", "|" + "---|" * 3 + "--:|" * 9]
-                         + ["| " + " | ".join(row) + " |" for row in body])
-    width = [max(len(row[i]) for row in [head] + body) for i in range(len(head))]
-    return "\n".join("  ".join(c.ljust(w) if i < 3 else c.rjust(w)
-                               for i, (c, w) in enumerate(zip(row, width))).rstrip()
-                     for row in [head] + body)
+    return small_table(head, body, 3, markdown)
 
 
 def cloth_plot(runs, tasks, title, filename):
