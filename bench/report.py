@@ -469,7 +469,7 @@ def cloth_table(runs, tasks, markdown):
         g = lambda k, f="{:.3g}": f.format(c[k]) if k in c else "-"  # noqa: E731
         boom = (f"frame {c['exploded_frame']:.0f}" if c.get("exploded") else "no")
         body.append([r.method, r.path, f"{r.n}", f"{r.ms:.3g}",
-                     eng(c.get("spring_updates_per_second", 0), "/s"), g("stretch_mean"),
+                     eng(c.get("spring_updates_per_second", 0), "updates/s"), g("stretch_mean"),
                      g("stretch_p99"), g("stretch_max"), g("stretch_max_away_from_pins"),
                      g("penetration"), "yes" if c.get("finite", 0) == 1 else "NO", boom])
     if not body:
