@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <random>
@@ -59,23 +60,15 @@ void addObstacles(Obstacles& o, std::mt19937& rng, int extra) {
   }
 }
 
-// A bumpy sheet of 8 x 8 quads over [-2.5, 2.5]^2 around y = 0.3, tilted: grazed, crossed along
-// its shared edges and hit from both sides by the random particles.
+// A bumpy sheet of 8 x 8 quads over [-2.5, 2.5]^2 around y = 0.3, tilted, in steps of 0.15 from
+// one vertex to the next: grazed, crossed along its shared edges and hit from both sides by the
+// random particles.
 MeshObstacle bumpySheet() {
-  Mesh mesh;
-  constexpr int kQuads = 8;
-  for (int i = 0; i <= kQuads; ++i)
-    for (int k = 0; k <= kQuads; ++k) {
-      const float x = -2.5f + 5.0f * float(i) / kQuads, z = -2.5f + 5.0f * float(k) / kQuads;
-      mesh.vertices.emplace_back(x, 0.3f + 0.2f * x + 0.15f * float((i * 7 + k * 3) % 4), z);
-    }
-  const auto at = [](int i, int k) { return std::uint32_t(i * (kQuads + 1) + k); };
-  for (int i = 0; i < kQuads; ++i)
-    for (int k = 0; k < kQuads; ++k) {
-      mesh.triangles.push_back({{at(i, k), at(i + 1, k), at(i + 1, k + 1)}});
-      mesh.triangles.push_back({{at(i, k), at(i + 1, k + 1), at(i, k + 1)}});
-    }
-  return std::make_shared<const MeshBvh>(mesh);
+  return std::make_shared<const MeshBvh>(
+      heightfieldMesh(9, 9, -2.5, 2.5, -2.5, 2.5, [](double x, double z) {
+        const int i = int(std::lround((x + 2.5) / 0.625)), k = int(std::lround((z + 2.5) / 0.625));
+        return 0.3 + 0.2 * x + 0.15 * ((i * 7 + k * 3) % 4);
+      }));
 }
 
 // Random particles in and around the obstacles, some fast (several bounces per step), some pinned,

@@ -32,20 +32,10 @@ void addParticleField(World& world) {
 }
 
 void addParticleTerrain(World& world) {
-  constexpr int kQuads = 64;
-  Mesh mesh;
-  for (int i = 0; i <= kQuads; ++i)
-    for (int k = 0; k <= kQuads; ++k) {
-      const double x = -10 + 20.0 * i / kQuads, z = -10 + 20.0 * k / kQuads;
-      mesh.vertices.emplace_back(x, 0.3 + 0.25 * std::sin(0.9 * x) * std::cos(0.7 * z), z);
-    }
-  const auto at = [](int i, int k) { return std::uint32_t(i * (kQuads + 1) + k); };
-  for (int i = 0; i < kQuads; ++i)
-    for (int k = 0; k < kQuads; ++k) {
-      mesh.triangles.push_back({{at(i, k), at(i, k + 1), at(i + 1, k + 1)}});
-      mesh.triangles.push_back({{at(i, k), at(i + 1, k + 1), at(i + 1, k)}});
-    }
-  world.obstacles().add(std::make_shared<const MeshBvh>(mesh));
+  const Mesh terrain = heightfieldMesh(65, 65, -10, 10, -10, 10, [](double x, double z) {
+    return 0.3 + 0.25 * std::sin(0.9 * x) * std::cos(0.7 * z);
+  });
+  world.obstacles().add(std::make_shared<const MeshBvh>(terrain));
 }
 
 ParticleWorkload makeParticleWorkload(std::size_t n) {

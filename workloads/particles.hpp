@@ -27,8 +27,8 @@ ParticleWorkload makeParticleWorkload(std::size_t n = 100'000);
 void addParticleField(World& world);
 
 // Our variant of W4 with a triangle mesh (not in WORKLOADS.md): after the ground and the ramp, a
-// terrain of 64 x 64 quads (8,192 triangles) over x, z in [-10, 10], its height
-// 0.3 + 0.25 sin(0.9 x) cos(0.7 z) m above the ground, under the ramp's high end.
+// terrain of 64 x 64 quads (8,192 triangles; mesh.hpp's heightfieldMesh) over x, z in [-10, 10],
+// its height 0.3 + 0.25 sin(0.9 x) cos(0.7 z) m above the ground, under the ramp's high end.
 void addParticleTerrain(World& world);
 
 // The obstacles as W4 states them, in the world's order.

@@ -28,6 +28,8 @@ struct Mesh {
   // degenerate triangle (its normal, computed in double, exactly zero: the raycast never hits it,
   // so it could only hide mistakes).
   void validate(std::string_view where) const;
+  // The vertices' box; a point at the origin for a mesh without vertices.
+  Aabb bounds() const;
 };
 
 // A heightfield of columns x rows vertices over [x0, x1] x [z0, z1]: vertex (i, j) (i along x, j

@@ -10,6 +10,13 @@
 
 namespace simdphys {
 
+Aabb Mesh::bounds() const {
+  if (vertices.empty()) return {Vec3f::Zero(), Vec3f::Zero()};
+  Aabb b{vertices.front(), vertices.front()};
+  for (const Vec3f& v : vertices) b.min = b.min.cwiseMin(v), b.max = b.max.cwiseMax(v);
+  return b;
+}
+
 void Mesh::validate(std::string_view where) const {
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     if (!vertices[i].allFinite())

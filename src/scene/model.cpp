@@ -16,13 +16,6 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
-Aabb meshBounds(const Mesh& mesh) {
-  if (mesh.vertices.empty()) return {Vec3f::Zero(), Vec3f::Zero()};
-  Aabb b{mesh.vertices.front(), mesh.vertices.front()};
-  for (const Vec3f& v : mesh.vertices) b.min = b.min.cwiseMin(v), b.max = b.max.cwiseMax(v);
-  return b;
-}
-
 Aabb obbBounds(const Obb& o) {
   const Vec3f reach = o.axes.cwiseAbs() * o.halfExtents;
   return {o.center - reach, o.center + reach};
@@ -32,7 +25,7 @@ Aabb obbBounds(const Obb& o) {
 
 Aabb localBounds(const ModelShape& shape) {
   return std::visit(
-      Overloaded{[](const std::shared_ptr<const MeshBvh>& m) { return meshBounds(m->mesh()); },
+      Overloaded{[](const std::shared_ptr<const MeshBvh>& m) { return m->mesh().bounds(); },
                  [](const Sphere& s) {
                    return Aabb{s.center.array() - s.radius, s.center.array() + s.radius};
                  },

@@ -25,15 +25,13 @@ void growBox(core::ObstacleRow& r) {
         center[k] = v[k], reach[k] = v[3];
         break;
       case core::ObstacleRow::kAabb:
+      case core::ObstacleRow::kMesh:  // v holds the box (a mesh's: its vertices'), min then max
         center[k] = 0.5f * (v[k] + v[3 + k]), reach[k] = 0.5f * (v[3 + k] - v[k]);
         break;
       case core::ObstacleRow::kObb:  // the box's extent along world axis k
         center[k] = v[k];
         reach[k] =
             std::abs(v[6 + k]) * v[3] + std::abs(v[9 + k]) * v[4] + std::abs(v[12 + k]) * v[5];
-        break;
-      case core::ObstacleRow::kMesh:  // v holds the vertices' box, min then max
-        center[k] = 0.5f * (v[k] + v[3 + k]), reach[k] = 0.5f * (v[3 + k] - v[k]);
         break;
     }
   }
@@ -58,11 +56,10 @@ void treeNear(const void* context, const float* lo, const float* hi, std::size_t
     if (!(box.minX <= box.maxX && box.minY <= box.maxY && box.minZ <= box.maxZ)) continue;
     simd::bvhQuery(nodes.data(), nodes.size(), box, found);
   }
-  std::sort(found.begin(), found.end());
-  found.erase(std::unique(found.begin(), found.end()), found.end());
   rows.assign(o.planes().begin(), o.planes().end());
   for (std::uint32_t k : found) rows.push_back(o.bounded()[k]);
   std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());  // boxes found by several lanes
 }
 
 // The reference's entry into a mesh (step-inl.hpp), lane by lane.
@@ -98,9 +95,7 @@ core::ObstacleRow rowOf(const ObstacleShape& shape) {
     r.kind = core::ObstacleRow::kObb, put(0, o->center), put(3, o->halfExtents);
     for (int c = 0; c < 3; ++c) put(6 + 3 * c, o->axes.col(c));
   } else {
-    Aabb box{Vec3f::Constant(kMaxCoordinate), Vec3f::Constant(-kMaxCoordinate)};
-    for (const Vec3f& v : std::get<MeshObstacle>(shape)->mesh().vertices)
-      box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
+    const Aabb box = std::get<MeshObstacle>(shape)->mesh().bounds();
     r.kind = core::ObstacleRow::kMesh, put(0, box.min), put(3, box.max);
   }
   growBox(r);
