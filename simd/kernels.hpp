@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cloth_step.hpp"
 #include "core/particle_step.hpp"
 #include "core/view.hpp"
 #include "simdphys/core.hpp"
@@ -319,5 +320,19 @@ inline constexpr std::uint32_t kMissKey = ~0u;
 extern const Kernel<void(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index,
                          std::size_t n, std::uint32_t* key)>
     meshRayKeys;
+
+// ---- cloth (cloth.hpp): one step of a cloth, all its substeps -----------------------------------
+// The streams end bit for bit where the float reference (src/reference/cloth/step-inl.hpp) leaves
+// them. `grid` null: the network's batches; else the grid's families (the same springs).
+struct ClothStepInput {
+  core::ClothView<float> view;
+  core::SpringNetwork network;
+  const core::SpringGrid* grid;
+  core::Tethers tethers;
+  const core::ObstacleRow* rows;  // planes, spheres and OBBs (AABBs as OBBs); meshes skipped
+  std::size_t nRows;
+  core::ClothStepParams params;
+};
+extern const Kernel<void(const ClothStepInput&)> stepCloth, stepClothAutovec;
 
 }  // namespace simdphys::simd

@@ -116,4 +116,18 @@ bool allFinite(std::span<const Vec3f> positions) {
                      [](const Vec3f& p) { return p.allFinite(); });
 }
 
+ClothGrid clothGrid(const ClothWorkload& w) {
+  ClothGrid g;
+  g.nx = g.nz = w.n;
+  g.positions = w.positions;
+  g.invMass = w.invMass;
+  return g;
+}
+
+std::vector<Spring> clothSprings(const ClothWorkload& w) {
+  std::vector<Spring> springs;
+  for (const ClothSpring& s : w.springs) springs.push_back({s.a, s.b, s.rest});
+  return springs;
+}
+
 }  // namespace simdphys::workloads

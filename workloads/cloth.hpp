@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "simdphys/cloth.hpp"
 #include "simdphys/geometry3d/primitives.hpp"
 #include "simdphys/math.hpp"
 
@@ -48,6 +49,11 @@ struct ClothWorkload {
   std::vector<ClothSpring> springs;
 };
 ClothWorkload makeClothWorkload(std::size_t n = 128);  // throws Error if n < 3
+
+// W3's cloth as simdphys models it: the grid (rigid springs: XPBD's default) and the same
+// springs as a general network, in the workload's order.
+ClothGrid clothGrid(const ClothWorkload& w);
+std::vector<Spring> clothSprings(const ClothWorkload& w);
 
 // Spring counts from the grid: structural 2 n (n-1), shear 2 (n-1)^2, bend 2 n (n-2).
 std::size_t clothSpringCount(std::size_t n, SpringKind kind);

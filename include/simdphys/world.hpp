@@ -1,7 +1,7 @@
 // The world: it owns the static obstacles (obstacles.hpp) and the particle systems
-// (particles.hpp; cloth and rigid bodies to come), and steps them at a fixed rate through a
-// pipeline of stages. A stage whose streams are empty costs nothing: a world of particles runs
-// no broadphase, no narrowphase and no solver.
+// (particles.hpp) and cloths (cloth.hpp; rigid bodies to come), and steps them at a fixed rate
+// through a pipeline of stages. A stage whose streams are empty costs nothing: a world of particles
+// runs no broadphase, no narrowphase and no solver.
 //
 // Steps are deterministic: a stage's elements are split into fixed partitions, run in parallel
 // with OpenMP, and nothing depends on which thread ran which partition, so the state after a step
@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "simdphys/cloth.hpp"
 #include "simdphys/handle.hpp"
 #include "simdphys/obstacles.hpp"
 #include "simdphys/particles.hpp"
@@ -39,6 +40,7 @@ struct StageProfile {
 // particles met.
 struct StepProfile {
   StageProfile particles;           // forces, integration and obstacle collision, fused in one pass
+  StageProfile cloth;               // every cloth's substeps; elements: spring updates
   double seconds = 0;               // the whole step
   std::uint64_t contacts = 0;       // surfaces met (bounces, slides, rests)
   std::uint64_t pushedOut = 0;      // particles found inside an obstacle and pushed out
@@ -65,6 +67,13 @@ class World {
   const ParticleSystem& particles(Handle system) const;
   std::size_t particleSystemCount() const { return systems_.size(); }
 
+  // Cloths, each with its own particles, springs and settings (cloth.hpp).
+  Handle addCloth(Cloth cloth);
+  void removeCloth(Handle cloth);
+  Cloth& cloth(Handle cloth);
+  const Cloth& cloth(Handle cloth) const;
+  std::size_t clothCount() const { return cloths_.size(); }
+
   // Advances the world by settings().timeStep. On an error nothing has moved.
   void step();
   const StepProfile& profile() const { return profile_; }
@@ -74,6 +83,8 @@ class World {
   Obstacles obstacles_;
   std::vector<ParticleSystem> systems_;
   HandleTable systemHandles_;
+  std::vector<Cloth> cloths_;
+  HandleTable clothHandles_;
   StepProfile profile_;
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "src/cloth/step.hpp"
 #include "src/particles/step.hpp"
 #include "src/reference/validate-inl.hpp"
 #include "src/world/obstacle_rows.hpp"
@@ -47,13 +48,35 @@ const ParticleSystem& World::particles(Handle h) const {
   return systems_[systemHandles_.index(h, "World::particles", "particle system")];
 }
 
+Handle World::addCloth(Cloth cloth) {
+  cloths_.push_back(std::move(cloth));
+  return clothHandles_.add();
+}
+
+void World::removeCloth(Handle h) {
+  const std::uint32_t i = clothHandles_.remove(h, "World::removeCloth", "cloth");
+  cloths_[i] = std::move(cloths_.back());
+  cloths_.pop_back();
+}
+
+Cloth& World::cloth(Handle h) { return cloths_[clothHandles_.index(h, "World::cloth", "cloth")]; }
+
+const Cloth& World::cloth(Handle h) const {
+  return cloths_[clothHandles_.index(h, "World::cloth", "cloth")];
+}
+
 void World::step() {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   profile_ = {};
+  // What may refuse the step is asked before anything moves.
+  const float dt = settings_.timeStep / float(settings_.substeps);
+  std::vector<int> clothSubsteps;
+  for (std::size_t c = 0; c < cloths_.size(); ++c)
+    clothSubsteps.push_back(
+        detail::clothSubsteps(cloths_[c], dt, "World::step: cloth " + std::to_string(c)));
   if (!systems_.empty()) {
     obstacles_.update();
-    const float dt = settings_.timeStep / float(settings_.substeps);
     const std::vector<core::ObstacleRow> rows = detail::obstacleRows(obstacles_);
     for (int sub = 0; sub < settings_.substeps; ++sub)
       for (ParticleSystem& s : systems_) {
@@ -69,6 +92,15 @@ void World::step() {
         profile_.outOfRange += c.outOfRange;
       }
     profile_.particles.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  if (!cloths_.empty()) {
+    const auto clothStart = Clock::now();
+    const std::vector<core::ObstacleRow> rows = detail::clothRows(obstacles_);
+    for (int sub = 0; sub < settings_.substeps; ++sub)
+      for (std::size_t c = 0; c < cloths_.size(); ++c)
+        profile_.cloth.elements += detail::stepCloth(cloths_[c], rows, dt, clothSubsteps[c],
+                                                     "World::step: cloth " + std::to_string(c));
+    profile_.cloth.seconds = std::chrono::duration<double>(Clock::now() - clothStart).count();
   }
   profile_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
 }

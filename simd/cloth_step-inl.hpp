@@ -1,0 +1,517 @@
+// The cloth step (cloth.hpp) over a cloth's slots, written once for a lane type: a Highway vector
+// (simd/cloth.cpp, the kernel) or one float (simd/cloth_autovec.cpp, the plain-loop baseline). The
+// arithmetic is the scalar reference's (src/reference/cloth/step-inl.hpp) operation for
+// operation, so every path ends bit for bit where the float reference does.
+//
+// The springs come in two layouts. A network's batch is read spring by spring with scalar indexed
+// loads into lanes (AVX-512 gathers lose to them on the machines measured, DESIGN.md) and written
+// back the same way; no two springs of a batch share a particle. A grid's family is a shifted copy
+// of the grid: the springs of one colour of family x+1 pair neighbouring lanes of one contiguous
+// load (lanes 2m, 2m+1; of x+2, lanes 4m + {0,1} with 4m + {2,3}), and each lane computes its own
+// end of its spring, the partner's coordinates brought in by a shuffle; the other families pair a
+// row with the next row(s), both contiguous loads. So a grid needs no gather and no scatter.
+// Included inside each target's namespace (no include guard, by design), after
+// simd/particle_lanes-inl.hpp.
+
+// ---- lanes
+// ---------------------------------------------------------------------------------------
+inline void storeWhere(ScalarLane, bool m, float v, float* p) {
+  if (m) *p = v;
+}
+// AVX-512's masked store; elsewhere a blend of the memory's values (AVX2's masked store is
+// microcoded on AMD's cores, many times slower), which writes the unchanged lanes back.
+template <class D, class M, class V>
+HWY_INLINE void storeWhere(D d, M m, V v, float* p) {
+#if HWY_TARGET <= HWY_AVX3
+  hn::BlendedStore(v, m, d, p);
+#else
+  StoreU(IfThenElse(m, v, LoadU(d, p)), d, p);
+#endif
+}
+template <class D>
+HWY_INLINE auto load3(D d, float* const* s, std::size_t field, std::size_t i) {
+  return Vec3L<LaneOf<D>>{
+      {LoadU(d, s[field] + i), LoadU(d, s[field + 1] + i), LoadU(d, s[field + 2] + i)}};
+}
+template <class D, class M, class V>
+HWY_INLINE void store3(D d, M m, const Vec3L<V>& v, float* const* s, std::size_t field,
+                       std::size_t i) {
+  for (int k = 0; k < 3; ++k) storeWhere(d, m, v[k], s[field + k] + i);
+}
+// std::min and std::max as the reference calls them: (b < a) ? b : a and (a < b) ? b : a.
+template <class V>
+HWY_INLINE V stdMin(V a, V b) {
+  return IfThenElse(Lt(b, a), b, a);
+}
+template <class V>
+HWY_INLINE V stdMax(V a, V b) {
+  return IfThenElse(Lt(a, b), b, a);
+}
+
+template <class D>
+struct ClothLanes {
+  using V = LaneOf<D>;
+  V h, invH, invH2, keep, margin, friction, zero, one;
+  Vec3L<V> g;
+  ClothLanes(D d, const core::ClothStepParams& p)
+      : h(Set(d, p.h)),
+        invH(Set(d, p.invH)),
+        invH2(Set(d, p.invH2)),
+        keep(Set(d, p.keep)),
+        margin(Set(d, p.margin)),
+        friction(Set(d, p.friction)),
+        zero(Zero(d)),
+        one(Set(d, 1.0f)),
+        g(splat3(d, p.gravity)) {}
+};
+
+// A spring's constants in lanes: alpha = compliance / h^2, gamma = compliance damping / h.
+template <class V>
+struct SpringLanes {
+  V rest, alpha, gamma, gamma1, stiffness, damping;
+};
+
+// ---- one spring, both models
+// --------------------------------------------------------------------- XPBD: the multiplier's
+// scale k of the correction d (w k) of the end at x, d = partner - x; `ok` false where the
+// reference skips the spring.
+template <bool kDamped, class V, class M>
+HWY_INLINE V xpbdScale(const Vec3L<V>& d, const Vec3L<V>& dv, V wsum, const SpringLanes<V>& s,
+                       V zero, M& ok) {
+  const V l = Sqrt(dot(d, d));
+  V num = l - s.rest;
+  V den;
+  if constexpr (kDamped) {
+    num = num + s.gamma * dot(d, dv) / l;
+    den = (s.gamma1 * wsum + s.alpha) * l;
+  } else {
+    den = (wsum + s.alpha) * l;
+  }
+  ok = And(ok, And(Gt(l, zero), Gt(den, zero)));
+  return num / den;
+}
+
+// Mass-spring: the force on the end at x is d k, d = partner - x, dvel = its velocity relative.
+template <bool kDamped, class V, class M>
+HWY_INLINE V forceScale(const Vec3L<V>& d, const Vec3L<V>& dvel, const SpringLanes<V>& s, V zero,
+                        M& ok) {
+  const V l = Sqrt(dot(d, d));
+  V f = s.stiffness * (l - s.rest);
+  if constexpr (kDamped) f = f + s.damping * dot(d, dvel) / l;
+  ok = And(ok, Gt(l, zero));
+  return f / l;
+}
+
+// The springs of a lane each, read and written through `ends` (RunEnds: a grid's row pair;
+// IndexedEnds: a network's batch), both ends of each updated.
+template <bool kXpbd, bool kDamped, class D, class Ends>
+HWY_INLINE void solvePairs(D, const Ends& ends, const SpringLanes<LaneOf<D>>& s, MaskOf<D> ok,
+                           const ClothLanes<D>& c) {
+  using V = LaneOf<D>;
+  using S = core::ClothStreams;
+  const Vec3L<V> xa = ends.a3(S::x), xb = ends.b3(S::x);
+  const Vec3L<V> dd = xb - xa;
+  const V wa = ends.a(S::w), wb = ends.b(S::w);
+  if constexpr (kXpbd) {
+    Vec3L<V> dv{};
+    if constexpr (kDamped) dv = (xb - ends.b3(S::px)) - (xa - ends.a3(S::px));
+    const V k = xpbdScale<kDamped>(dd, dv, wa + wb, s, c.zero, ok);
+    ends.putB3(S::x, And(ok, Gt(wb, c.zero)), xb + Neg(dd) * (wb * k));
+    ends.putA3(S::x, And(ok, Gt(wa, c.zero)), xa + dd * (wa * k));
+  } else {
+    Vec3L<V> dvel{};
+    if constexpr (kDamped) dvel = ends.b3(S::vx) - ends.a3(S::vx);
+    const V k = forceScale<kDamped>(dd, dvel, s, c.zero, ok);
+    ends.putB3(S::fx, ok, ends.b3(S::fx) + Neg(dd) * k);
+    ends.putA3(S::fx, ok, ends.a3(S::fx) + dd * k);
+  }
+}
+
+// ---- predict and finish, slot by slot
+// ------------------------------------------------------------
+template <bool kXpbd, class D>
+void predict(D d, const core::ClothView<float>& v, const ClothLanes<D>& c) {
+  using S = core::ClothStreams;
+  for (std::size_t i = 0; i < v.slots; i += Lanes(d)) {
+    const auto w = LoadU(d, v.s[S::w] + i);
+    const auto live = Gt(w, c.zero);
+    if (AllFalse(d, live)) continue;
+    auto vel = load3(d, v.s, S::vx, i);
+    if constexpr (kXpbd)
+      vel = (vel + c.g * c.h) * c.keep;
+    else
+      vel = (vel + (c.g + load3(d, v.s, S::fx, i) * w) * c.h) * c.keep;
+    const auto x = load3(d, v.s, S::x, i);
+    store3(d, live, vel, v.s, S::vx, i);
+    store3(d, live, x, v.s, S::px, i);
+    store3(d, live, x + vel * c.h, v.s, S::x, i);
+  }
+}
+
+// A contact along n, `depth` deep, where `hit`: pushed out, then friction (the reference's
+// collide()).
+template <class D, class V, class M>
+HWY_INLINE void contact(const ClothLanes<D>& c, M hit, const Vec3L<V>& n, V depth,
+                        const Vec3L<V>& p, Vec3L<V>& x) {
+  const Vec3L<V> pushed = x + n * depth;
+  const Vec3L<V> moved = pushed - p;
+  const Vec3L<V> tangent = moved - n * dot(n, moved);
+  const V tl = Sqrt(dot(tangent, tangent)), hold = c.friction * depth;
+  const V scale = IfThenElse(Le(tl, hold), c.one, hold / tl);
+  x = IfThenElse(hit, IfThenElse(Gt(tl, c.zero), pushed - tangent * scale, pushed), x);
+}
+
+template <class D, class V, class M>
+HWY_INLINE void collide(D d, const core::ObstacleRow& row, const ClothLanes<D>& c, M live,
+                        const Vec3L<V>& p, Vec3L<V>& x) {
+  const auto at = [&](int k) { return splat3(d, row.v + k); };
+  switch (row.kind) {
+    case core::ObstacleRow::kPlane: {
+      const Vec3L<V> n = at(0);
+      const V s = dot(n, x) + Set(d, row.v[3]);
+      const auto hit = And(live, Lt(s, c.margin));
+      if (!AllFalse(d, hit)) contact(c, hit, n, c.margin - s, p, x);
+      return;
+    }
+    case core::ObstacleRow::kSphere: {
+      const Vec3L<V> e = x - at(0);
+      const V r = Set(d, row.v[3]) + c.margin, l2 = dot(e, e);
+      auto hit = And(live, Lt(l2, r * r));
+      if (AllFalse(d, hit)) return;
+      const V l = Sqrt(l2);
+      hit = And(hit, Gt(l, c.zero));
+      contact(c, hit, e / l, r - l, p, x);
+      return;
+    }
+    case core::ObstacleRow::kObb: {
+      const Vec3L<V> centre = at(0), axes[3] = {at(6), at(9), at(12)};
+      const Vec3L<V> xc = x - centre, pc = p - centre;
+      const V minusOne = Set(d, -1.0f), two = Set(d, 2.0f), three = Set(d, 3.0f);
+      V enter = minusOne, exit = two, least = Set(d, std::numeric_limits<float>::infinity());
+      V face = minusOne, nearest = c.zero;
+      auto outside = Lt(c.one, c.zero);  // all false
+      V q[3], q0[3], e[3];
+      for (int k = 0; k < 3; ++k) {
+        e[k] = Set(d, row.v[3 + k]) + c.margin;
+        q[k] = dot(axes[k], xc), q0[k] = dot(axes[k], pc);
+        const V dq = q[k] - q0[k];
+        const auto in0 = Lt(Abs(q0[k]), e[k]);
+        outside = Or(outside, Not(in0));
+        const V t0 = (Neg(e[k]) - q0[k]) / dq, t1 = (e[k] - q0[k]) / dq;
+        const auto still = Eq(dq, c.zero);
+        const V lo = IfThenElse(still, IfThenElse(in0, minusOne, three), stdMin(t0, t1));
+        const V hi = IfThenElse(still, two, stdMax(t0, t1));
+        const V kk = Set(d, float(k));
+        const auto later = Gt(lo, enter);
+        enter = IfThenElse(later, lo, enter), face = IfThenElse(later, kk, face);
+        exit = stdMin(exit, hi);
+        const V pen = e[k] - Abs(q0[k]);
+        const auto less = Lt(pen, least);
+        least = IfThenElse(less, pen, least), nearest = IfThenElse(less, kk, nearest);
+      }
+      const V axis = IfThenElse(outside, face, nearest);
+      Vec3L<V> n = axes[2];
+      V ek = e[2], qk = q[2], q0k = q0[2];
+      for (int k = 1; k >= 0; --k) {
+        const auto is = Eq(axis, Set(d, float(k)));
+        n = IfThenElse(is, axes[k], n);
+        ek = IfThenElse(is, e[k], ek), qk = IfThenElse(is, q[k], qk),
+        q0k = IfThenElse(is, q0[k], q0k);
+      }
+      const V side = IfThenElse(Lt(q0k, c.zero), minusOne, c.one);
+      const V depth = ek - side * qk;
+      const auto crossed = And(And(Le(enter, exit), Ge(enter, c.zero)), Le(enter, c.one));
+      const auto hit = And(live, Or(And(outside, crossed), And(Not(outside), Gt(depth, c.zero))));
+      if (!AllFalse(d, hit)) contact(c, hit, n * side, depth, p, x);
+      return;
+    }
+    default:
+      return;  // meshes: not met by cloth
+  }
+}
+
+// Tethers, obstacles and the velocity changed by what moved the particle off its prediction.
+template <class D>
+void finish(D d, const core::ClothView<float>& v, const core::Tethers& tethers,
+            const core::ObstacleRow* rows, std::size_t nRows, const ClothLanes<D>& c) {
+  using S = core::ClothStreams;
+  using V = LaneOf<D>;
+  for (std::size_t i = 0; i < v.slots; i += Lanes(d)) {
+    const auto live = Gt(LoadU(d, v.s[S::w] + i), c.zero);
+    if (AllFalse(d, live)) continue;
+    const Vec3L<V> p = load3(d, v.s, S::px, i), vel = load3(d, v.s, S::vx, i);
+    const Vec3L<V> predicted = p + vel * c.h;
+    Vec3L<V> x = load3(d, v.s, S::x, i);
+    if (tethers.anchor) {
+      const V len = LoadU(d, tethers.length + i);
+      const Vec3L<V> anchor = load3(d, v.s, S::ax, i);
+      const Vec3L<V> e = x - anchor;
+      const V l2 = dot(e, e);
+      const auto over = And(Ge(len, c.zero), Gt(l2, len * len));
+      if (!AllFalse(d, over)) x = IfThenElse(over, anchor + e * (len / Sqrt(l2)), x);
+    }
+    for (std::size_t r = 0; r < nRows; ++r) collide(d, rows[r], c, live, p, x);
+    store3(d, live, x, v.s, S::x, i);
+    store3(d, live, vel + (x - predicted) * c.invH, v.s, S::vx, i);
+  }
+}
+
+// ---- the springs
+// ----------------------------------------------------------------------------------- Ends as
+// contiguous runs from slots ia and ib (a grid's row pair, or one lane).
+template <class D>
+struct RunEnds {
+  using V = LaneOf<D>;
+  D d;
+  float* const* s;
+  std::size_t ia, ib;
+  V a(std::size_t f) const { return LoadU(d, s[f] + ia); }
+  V b(std::size_t f) const { return LoadU(d, s[f] + ib); }
+  Vec3L<V> a3(std::size_t f) const { return load3(d, s, f, ia); }
+  Vec3L<V> b3(std::size_t f) const { return load3(d, s, f, ib); }
+  template <class M>
+  void putA3(std::size_t f, M m, const Vec3L<V>& v) const {
+    store3(d, m, v, s, f, ia);
+  }
+  template <class M>
+  void putB3(std::size_t f, M m, const Vec3L<V>& v) const {
+    store3(d, m, v, s, f, ib);
+  }
+};
+
+inline std::uint64_t maskBits(ScalarLane, bool m) { return m; }
+template <class D, class M>
+HWY_INLINE std::uint64_t maskBits(D d, M m) {
+  std::uint8_t bytes[8] = {};
+  hn::StoreMaskBits(d, m, bytes);
+  std::uint64_t bits = 0;
+  for (int k = 0; k < 8; ++k) bits |= std::uint64_t(bytes[k]) << (8 * k);
+  return bits;
+}
+
+// n lanes of field[idx[l]]. Lanes past n read slot idx[l] too (the index streams are padded with
+// valid slots).
+inline float gatherLanes(ScalarLane, const float* field, const std::uint32_t* idx, std::size_t) {
+  return field[idx[0]];
+}
+template <class D>
+HWY_INLINE LaneOf<D> gatherLanes(D d, const float* field, const std::uint32_t* idx, std::size_t n) {
+#if HWY_TARGET <= HWY_AVX2
+  (void)n;
+  const hn::RebindToSigned<D> di;
+  return hn::GatherIndex(d, field, hn::BitCast(di, hn::LoadU(hn::RebindToUnsigned<D>(), idx)));
+#else
+  alignas(64) float lanes[16] = {};
+  for (std::size_t l = 0; l < n; ++l) lanes[l] = field[idx[l]];
+  return Load(d, lanes);
+#endif
+}
+
+// Ends read and written lane by lane through slot indices (a network's batch): `n` live lanes.
+template <class D>
+struct IndexedEnds {
+  using V = LaneOf<D>;
+  static constexpr std::size_t kMax = 16;  // the widest lane count
+  D d;
+  float* const* s;
+  const std::uint32_t *ia, *ib;
+  std::size_t n;
+  static V gather(D d, const float* field, const std::uint32_t* idx, std::size_t n) {
+    return gatherLanes(d, field, idx, n);
+  }
+  template <class M>
+  static void scatter(D d, M m, V v, float* field, const std::uint32_t* idx, std::size_t n) {
+    alignas(64) float lanes[kMax];
+    Store(v, d, lanes);
+    const std::uint64_t bits = maskBits(d, m);
+    for (std::size_t l = 0; l < n; ++l)
+      if (bits >> l & 1) field[idx[l]] = lanes[l];
+  }
+  V a(std::size_t f) const { return gather(d, s[f], ia, n); }
+  V b(std::size_t f) const { return gather(d, s[f], ib, n); }
+  Vec3L<V> a3(std::size_t f) const { return {{a(f), a(f + 1), a(f + 2)}}; }
+  Vec3L<V> b3(std::size_t f) const { return {{b(f), b(f + 1), b(f + 2)}}; }
+  template <class M>
+  void putA3(std::size_t f, M m, const Vec3L<V>& v) const {
+    for (int k = 0; k < 3; ++k) scatter(d, m, v[k], s[f + k], ia, n);
+  }
+  template <class M>
+  void putB3(std::size_t f, M m, const Vec3L<V>& v) const {
+    for (int k = 0; k < 3; ++k) scatter(d, m, v[k], s[f + k], ib, n);
+  }
+};
+
+template <class D>
+HWY_INLINE SpringLanes<LaneOf<D>> springLanes(D d, float rest, float compliance, float stiffness,
+                                              float damping, const core::ClothStepParams& p) {
+  const float gamma = compliance * damping * p.invH;  // the reference's order
+  return {Set(d, rest),      Set(d, compliance * p.invH2),
+          Set(d, gamma),     Set(d, 1 + gamma),
+          Set(d, stiffness), Set(d, damping)};
+}
+
+// One batch of a network, springs [begin, end).
+template <bool kXpbd, bool kDamped, class D>
+void networkBatch(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
+                  std::size_t begin, std::size_t end, const ClothLanes<D>& c,
+                  const core::ClothStepParams& p) {
+  const std::size_t L = Lanes(d);
+  for (std::size_t k = begin; k < end; k += L) {
+    const std::size_t n = std::min(L, end - k);
+    const IndexedEnds<D> ends{d, v.s, net.a + k, net.b + k, n};
+    SpringLanes<LaneOf<D>> s;
+    s.rest = LoadU(d, net.rest + k);
+    s.alpha = LoadU(d, net.compliance + k) * Set(d, p.invH2);
+    s.gamma = LoadU(d, net.compliance + k) * LoadU(d, net.damping + k) * Set(d, p.invH);
+    s.gamma1 = c.one + s.gamma;
+    s.stiffness = LoadU(d, net.stiffness + k);
+    s.damping = LoadU(d, net.damping + k);
+    solvePairs<kXpbd, kDamped>(d, ends, s, FirstN(d, n), c);
+  }
+}
+
+// A grid's x+1 or x+2 family, one colour, by shuffles: each lane its own end of its spring.
+template <bool kXpbd, bool kDamped, class D, class Partner, class Dup>
+HWY_INLINE void solveLanes(D d, float* const* s, std::size_t i, const float* rest,
+                           SpringLanes<LaneOf<D>> sl, const Partner& partner, const Dup& dup,
+                           const ClothLanes<D>& c) {
+  using S = core::ClothStreams;
+  using V = LaneOf<D>;
+  sl.rest = dup(LoadU(d, rest + i));
+  auto ok = Ge(sl.rest, c.zero);
+  if (AllFalse(d, ok)) return;
+  const auto other = [&](const Vec3L<V>& x) {
+    return Vec3L<V>{{partner(x[0]), partner(x[1]), partner(x[2])}};
+  };
+  const Vec3L<V> x = load3(d, s, S::x, i), dd = other(x) - x;
+  const V w = LoadU(d, s[S::w] + i);
+  if constexpr (kXpbd) {
+    Vec3L<V> dv{};
+    if constexpr (kDamped) {
+      const Vec3L<V> p = load3(d, s, S::px, i);
+      dv = (other(x) - other(p)) - (x - p);
+    }
+    const V k = xpbdScale<kDamped>(dd, dv, w + partner(w), sl, c.zero, ok);
+    store3(d, And(ok, Gt(w, c.zero)), x + dd * (w * k), s, S::x, i);
+  } else {
+    Vec3L<V> dvel{};
+    if constexpr (kDamped) {
+      const Vec3L<V> vel = load3(d, s, S::vx, i);
+      dvel = other(vel) - vel;
+    }
+    const V k = forceScale<kDamped>(dd, dvel, sl, c.zero, ok);
+    store3(d, ok, load3(d, s, S::fx, i) + dd * k, s, S::fx, i);
+  }
+}
+
+template <class D>
+inline constexpr bool kShuffles = !std::is_same_v<D, ScalarLane> && HWY_TARGET != HWY_SCALAR;
+
+// Family x+1 (`next`: neighbouring lanes) or x+2 (lanes two apart in each block of four).
+template <bool kXpbd, bool kDamped, class D>
+HWY_INLINE void alongByShuffles(D d, float* const* s, std::size_t i, const float* rest,
+                                const SpringLanes<LaneOf<D>>& sl, bool next,
+                                const ClothLanes<D>& c) {
+#if HWY_TARGET != HWY_SCALAR
+  if (next) {
+    solveLanes<kXpbd, kDamped>(
+        d, s, i, rest, sl, [](auto x) { return hn::Shuffle2301(x); },
+        [](auto r) { return hn::DupEven(r); }, c);
+  } else {
+    solveLanes<kXpbd, kDamped>(
+        d, s, i, rest, sl, [](auto x) { return hn::Shuffle1032(x); },
+        [d](auto r) {  // the rests of lanes 0, 1 of each block of four to lanes 2, 3
+          const hn::Repartition<std::uint64_t, D> d64;
+          const auto r64 = hn::BitCast(d64, r);
+          return hn::BitCast(d, hn::InterleaveLower(d64, r64, r64));
+        },
+        c);
+  }
+#else
+  (void)d, (void)s, (void)i, (void)rest, (void)sl, (void)next, (void)c;
+#endif
+}
+
+template <bool kXpbd, bool kDamped, class D>
+void gridFamily(D d, const core::ClothView<float>& v, const core::SpringGrid& g, std::uint32_t f,
+                const ClothLanes<D>& c, const core::ClothStepParams& p) {
+  using G = core::SpringGrid;
+  const std::size_t L = Lanes(d);
+  const std::uint32_t kind = G::kKind[f];
+  SpringLanes<LaneOf<D>> sl =
+      springLanes(d, 0, g.compliance[kind], g.stiffness[kind], g.damping[kind], p);
+  const float* rest = g.rest[f];
+  const std::size_t o = std::size_t(g.offset(f));
+  const auto run = [&](std::size_t ia, std::size_t n) {
+    SpringLanes<LaneOf<D>> s = sl;
+    s.rest = LoadU(d, rest + ia);
+    const auto ok = And(FirstN(d, n), Ge(s.rest, c.zero));
+    if (!AllFalse(d, ok)) solvePairs<kXpbd, kDamped>(d, RunEnds<D>{d, v.s, ia, ia + o}, s, ok, c);
+  };
+  const bool along = f == G::kX || f == G::kBendX;  // pairs within a row
+  const std::size_t span = f == G::kBendX || f == G::kBendZ ? 2 : 1;
+  for (std::size_t colour = 0; colour < 2; ++colour) {
+    if (along) {
+      if constexpr (kShuffles<D>) {
+        for (std::size_t i = colour * span; i < v.slots; i += L)
+          alongByShuffles<kXpbd, kDamped>(d, v.s, i, rest, sl, f == G::kX, c);
+      } else {
+        for (std::size_t i = colour * span; i < v.slots; i += 2 * span)
+          for (std::size_t q = i; q < i + span; ++q) run(q, 1);
+      }
+    } else {
+      for (std::size_t j = 0; j < g.rows; ++j) {
+        if ((j / span) % 2 != colour) continue;
+        for (std::size_t i = j * g.stride; i < (j + 1) * g.stride; i += L) run(i, L);
+      }
+    }
+  }
+}
+
+// ---- the step
+// ---------------------------------------------------------------------------------------
+template <bool kXpbd, bool kDamped, class D>
+void springs(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
+             const core::SpringGrid* grid, const ClothLanes<D>& c, const core::ClothStepParams& p) {
+  if (grid) {
+    for (std::uint32_t f = 0; f < core::SpringGrid::kFamilies; ++f)
+      gridFamily<kXpbd, kDamped>(d, v, *grid, f, c, p);
+  } else {
+    for (std::size_t b = 0; b < net.batches; ++b)
+      networkBatch<kXpbd, kDamped>(d, v, net, net.batchBegin[b], net.batchBegin[b + 1], c, p);
+  }
+}
+
+template <bool kXpbd, bool kDamped, class D>
+void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
+              const core::SpringGrid* grid, const core::Tethers& t, const core::ObstacleRow* rows,
+              std::size_t nRows, const core::ClothStepParams& p) {
+  using S = core::ClothStreams;
+  const ClothLanes<D> c(d, p);
+  for (int sub = 0; sub < p.substeps; ++sub) {
+    if constexpr (!kXpbd) {
+      for (std::size_t k = 0; k < 3; ++k) std::fill_n(v.s[S::fx + k], v.slots, 0.0f);
+      springs<kXpbd, kDamped>(d, v, net, grid, c, p);
+    }
+    predict<kXpbd>(d, v, c);
+    if constexpr (kXpbd) springs<kXpbd, kDamped>(d, v, net, grid, c, p);
+    finish(d, v, t, rows, nRows, c);
+  }
+}
+
+// The step: the tethers' anchors copied (no substep moves a pinned particle), then the substeps.
+template <class D>
+void stepClothT(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
+                const core::SpringGrid* grid, const core::Tethers& t, const core::ObstacleRow* rows,
+                std::size_t nRows, const core::ClothStepParams& p) {
+  using S = core::ClothStreams;
+  if (t.anchor)
+    for (std::size_t i = 0; i < v.slots; ++i)
+      if (t.length[i] >= 0)
+        for (std::size_t k = 0; k < 3; ++k) v.s[S::ax + k][i] = v.s[S::x + k][t.anchor[i]];
+  const bool xpbd = p.model == core::ClothStepParams::kXpbd;
+  if (xpbd && p.damped) substeps<true, true>(d, v, net, grid, t, rows, nRows, p);
+  if (xpbd && !p.damped) substeps<true, false>(d, v, net, grid, t, rows, nRows, p);
+  if (!xpbd && p.damped) substeps<false, true>(d, v, net, grid, t, rows, nRows, p);
+  if (!xpbd && !p.damped) substeps<false, false>(d, v, net, grid, t, rows, nRows, p);
+}

@@ -1,0 +1,31 @@
+// Stepping a cloth (cloth.hpp) on the active path: the reference, the kernel or its plain-loop
+// baseline.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/cloth_step.hpp"
+#include "simdphys/cloth.hpp"
+#include "simdphys/obstacles.hpp"
+
+namespace simdphys::detail {
+
+// The obstacles as cloth meets them: planes, spheres and OBBs in order, AABBs as OBBs; meshes
+// left out (cloth.hpp).
+std::vector<core::ObstacleRow> clothRows(const Obstacles& obstacles);
+
+// The substeps of a step of dt: the settings', raised for the mass-spring model to its stability
+// bound. Throws Error naming `where` if that takes more than ClothSettings::kMaxSubsteps, or the
+// model is mass-spring and a spring is rigid.
+int clothSubsteps(const Cloth& cloth, float dt, const std::string& where);
+
+core::ClothStepParams clothParams(const Cloth& cloth, float dt, int substeps);
+
+// One step of dt (clothSubsteps() first: it throws, this does not, for valid input). If a
+// particle would leave the supported range, nothing moves and it throws Error naming it. Returns
+// the spring updates done (springs times substeps).
+std::size_t stepCloth(Cloth& cloth, std::span<const core::ObstacleRow> rows, float dt, int substeps,
+                      const std::string& where);
+
+}  // namespace simdphys::detail
