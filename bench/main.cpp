@@ -17,6 +17,7 @@ void registerSceneBenchmarks();
 void registerOverlap3dBenchmarks();
 void registerGeometry2dBenchmarks();
 void registerParticleBenchmarks();
+void registerClothBenchmarks();
 }  // namespace simdphys::bench
 
 namespace {
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
   bench::registerOverlap3dBenchmarks();
   bench::registerGeometry2dBenchmarks();
   bench::registerParticleBenchmarks();
+  bench::registerClothBenchmarks();
 #ifdef SIMDPHYS_HAVE_BULLET
   bench::registerBulletBenchmarks();
 #endif

@@ -166,7 +166,13 @@ SECTIONS = [
      "largest away from the pinned corners), and over every frame the deepest penetration into "
      "the true sphere; finite: every position stayed finite; exploded: the frame where the "
      "99th-percentile stretch first passed 1. Peer: Bullet's btSoftBody set up as its SoftDemo "
-     "cloth, at its default position iterations and at 10 and 30. The plot sets the mean "
+     "cloth, at its default position iterations and at 10 and 30. simdphys: xpbd is the grid "
+     "cloth at the defaults (XPBD, 10 substeps, tethers) on every path; autovec the same step "
+     "as plain loops; xpbd_network the same springs as a general network (greedy colours, "
+     "indexed loads); xpbd_s<k> other substeps and _untethered without tethers; "
+     "mass_spring_k1e<e> the mass-spring model with every spring at 10^e N/m (its substeps set "
+     "by the stability bound). error: the largest distance from the same cloth stepped by the "
+     "double-precision reference, after 10 frames and at the end. The plot sets the mean "
      "stretch against the time of a frame."),
     ("Integrators: error against cost on closed forms",
      ["integrate_projectile", "integrate_oscillator"], "integrators",
@@ -460,45 +466,80 @@ def cloth_runs(runs):
 
 def cloth_table(runs, tasks, markdown):
     """Per run: ms a frame, spring updates a second, the stretch figures, the penetration,
-    finiteness and the explosion."""
-    head = ["method", "path", "n", "ms/frame", "spring updates/s", "stretch mean", "p99", "max",
-            "max off pins", "deepest in sphere", "finite", "exploded"]
+    finiteness, the explosion, and the error against the double reference."""
+    head = ["method", "path", "n", "substeps", "ms/frame", "spring updates/s", "stretch mean",
+            "p99", "max", "max off pins", "deepest in sphere", "finite", "exploded",
+            "error max at 0.17 s / end"]
     body = []
     for r in cloth_runs(runs):
         c = r.counters
         g = lambda k, f="{:.3g}": f.format(c[k]) if k in c else "-"  # noqa: E731
         boom = (f"frame {c['exploded_frame']:.0f}" if c.get("exploded") else "no")
-        body.append([r.method, r.path, f"{r.n}", f"{r.ms:.3g}",
+        steps = g("substeps", "{:.0f}") if "substeps" in c else g("position_iterations", "{:.0f} it")
+        err = f"{g('error_max_early')} / {g('error_max')}" if "error_max" in c else "-"
+        body.append([r.method, r.path, f"{r.n}", steps, f"{r.ms:.3g}",
                      eng(c.get("spring_updates_per_second", 0), "updates/s"), g("stretch_mean"),
                      g("stretch_p99"), g("stretch_max"), g("stretch_max_away_from_pins"),
-                     g("penetration"), "yes" if c.get("finite", 0) == 1 else "NO", boom])
+                     g("penetration"), "yes" if c.get("finite", 0) == 1 else "NO", boom, err])
     if not body:
         return ""
     return small_table(head, body, 3, markdown)
 
 
+def cloth_family(method):
+    """The series a W3 run belongs to in the plot: XPBD over its substeps (with or without
+    tethers), the mass-spring model over its stiffness; None for a lone point."""
+    if method == "xpbd" or re.fullmatch(r"xpbd_s\d+", method):
+        return "XPBD, tethers"
+    if method.startswith("xpbd") and method.endswith("_untethered"):
+        return "XPBD, no tethers"
+    if method.startswith("mass_spring"):
+        return "mass-spring"
+    return None
+
+
 def cloth_plot(runs, tasks, title, filename):
-    """Mean structural stretch against ms a frame (log-log), a panel per n; peers grey."""
+    """Mean structural stretch against ms a frame (log-log), a panel per n: simdphys's models on
+    the best path as lines over their substeps or stiffness, other runs as points, peers grey."""
     rs = cloth_runs(runs)
     ns = sorted({r.n for r in rs})
     if not ns:
         return False
-    fig, axes = plt.subplots(1, len(ns), figsize=(6 * len(ns), 4.5), squeeze=False)
+    # The best path: the one the best-path-only runs (xpbd_s2, ...) ran on.
+    best = next((r.path for r in rs if r.method != "xpbd" and cloth_family(r.method)), None)
+    fig, axes = plt.subplots(1, len(ns), figsize=(7 * len(ns), 5), squeeze=False)
     for ax, n in zip(axes[0], ns):
-        for r in (r for r in rs if r.n == n):
-            peer = r.path == "peer"
-            y = max(r.counters.get("stretch_mean", 0), 1e-6)
-            ax.plot([r.ms], [y], marker="s" if peer else "o", color="grey" if peer else None,
-                    linestyle="none")
-            boom = " (exploded)" if r.counters.get("exploded") else ""
-            ax.annotate(f"{r.method}{boom}", (r.ms, y), fontsize=7, xytext=(3, 3),
-                        textcoords="offset points")
+        mine = [r for r in rs if r.n == n]
+        families = {}
+        for r in mine:
+            f = cloth_family(r.method) if r.path == best else None
+            if f:
+                families.setdefault(f, []).append(r)
+        for f, pts in families.items():
+            pts.sort(key=lambda r: r.ms)
+            ax.plot([r.ms for r in pts], [max(r.counters.get("stretch_mean", 0), 1e-6) for r in pts],
+                    marker="o", label=f"simdphys {f} ({best})")
+            for r in pts:
+                ax.annotate(f"{r.counters.get('substeps', 0):.0f}", (r.ms, r.counters["stretch_mean"]),
+                            fontsize=7, xytext=(3, -9), textcoords="offset points")
+        for r in mine:
+            if r.path != best or not cloth_family(r.method):
+                if r.path not in ("peer", "reference") and r.path != best:
+                    continue
+                peer = r.path == "peer"
+                y = max(r.counters.get("stretch_mean", 0), 1e-6)
+                ax.plot([r.ms], [y], marker="s" if peer else "D", color="grey" if peer else "black",
+                        linestyle="none")
+                boom = " (exploded)" if r.counters.get("exploded") else ""
+                ax.annotate(f"{r.method} {r.path}{boom}", (r.ms, y), fontsize=7, xytext=(3, 3),
+                            textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_title(f"n = {n}", fontsize=10)
-        ax.set_xlabel("ms a frame (lower is faster)", fontsize=9)
-        ax.set_ylabel("mean structural stretch at the end", fontsize=9)
+        ax.set_title(f"n = {n} (numbers: substeps)", fontsize=10)
+        ax.set_xlabel("ms a frame, one thread (lower is faster)", fontsize=9)
+        ax.set_ylabel("mean structural stretch at the end (lower holds better)", fontsize=9)
         ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8)
     fig.suptitle(title, x=0.02, ha="left", fontsize=11)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     fig.savefig(filename, dpi=100)

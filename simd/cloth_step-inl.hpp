@@ -13,8 +13,7 @@
 // Included inside each target's namespace (no include guard, by design), after
 // simd/particle_lanes-inl.hpp.
 
-// ---- lanes
-// ---------------------------------------------------------------------------------------
+// ---- lanes --------------------------------------------------------------------------------------
 inline void storeWhere(ScalarLane, bool m, float v, float* p) {
   if (m) *p = v;
 }
@@ -48,6 +47,18 @@ HWY_INLINE V stdMax(V a, V b) {
   return IfThenElse(Lt(a, b), b, a);
 }
 
+// Runs f(begin, end) over [first, end) in parts of `part` elements, shared among the threads of
+// an enclosing parallel region (alone outside one), each part whole by one thread: the work of a
+// pass touches no element of another part, so the result does not depend on the split.
+template <class F>
+HWY_INLINE void forParts(std::size_t first, std::size_t end, std::size_t part, F&& f) {
+  const auto parts = std::ptrdiff_t((end - first + part - 1) / part);
+#pragma omp for schedule(static)
+  for (std::ptrdiff_t k = 0; k < parts; ++k)
+    f(first + std::size_t(k) * part, std::min(end, first + std::size_t(k + 1) * part));
+}
+constexpr std::size_t kPart = 2048;  // slots of a part: a multiple of every lane count and of 4
+
 template <class D>
 struct ClothLanes {
   using V = LaneOf<D>;
@@ -71,10 +82,9 @@ struct SpringLanes {
   V rest, alpha, gamma, gamma1, stiffness, damping;
 };
 
-// ---- one spring, both models
-// --------------------------------------------------------------------- XPBD: the multiplier's
-// scale k of the correction d (w k) of the end at x, d = partner - x; `ok` false where the
-// reference skips the spring.
+// ---- one spring, both models --------------------------------------------------------------------
+// XPBD: the multiplier's scale k of the correction d (w k) of the end at x, d = partner - x;
+// `ok` false where the reference skips the spring.
 template <bool kDamped, class V, class M>
 HWY_INLINE V xpbdScale(const Vec3L<V>& d, const Vec3L<V>& dv, V wsum, const SpringLanes<V>& s,
                        V zero, M& ok) {
@@ -127,25 +137,26 @@ HWY_INLINE void solvePairs(D, const Ends& ends, const SpringLanes<LaneOf<D>>& s,
   }
 }
 
-// ---- predict and finish, slot by slot
-// ------------------------------------------------------------
+// ---- predict and finish, slot by slot -----------------------------------------------------------
 template <bool kXpbd, class D>
 void predict(D d, const core::ClothView<float>& v, const ClothLanes<D>& c) {
   using S = core::ClothStreams;
-  for (std::size_t i = 0; i < v.slots; i += Lanes(d)) {
-    const auto w = LoadU(d, v.s[S::w] + i);
-    const auto live = Gt(w, c.zero);
-    if (AllFalse(d, live)) continue;
-    auto vel = load3(d, v.s, S::vx, i);
-    if constexpr (kXpbd)
-      vel = (vel + c.g * c.h) * c.keep;
-    else
-      vel = (vel + (c.g + load3(d, v.s, S::fx, i) * w) * c.h) * c.keep;
-    const auto x = load3(d, v.s, S::x, i);
-    store3(d, live, vel, v.s, S::vx, i);
-    store3(d, live, x, v.s, S::px, i);
-    store3(d, live, x + vel * c.h, v.s, S::x, i);
-  }
+  forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; i += Lanes(d)) {
+      const auto w = LoadU(d, v.s[S::w] + i);
+      const auto live = Gt(w, c.zero);
+      if (AllFalse(d, live)) continue;
+      auto vel = load3(d, v.s, S::vx, i);
+      if constexpr (kXpbd)
+        vel = (vel + c.g * c.h) * c.keep;
+      else
+        vel = (vel + (c.g + load3(d, v.s, S::fx, i) * w) * c.h) * c.keep;
+      const auto x = load3(d, v.s, S::x, i);
+      store3(d, live, vel, v.s, S::vx, i);
+      store3(d, live, x, v.s, S::px, i);
+      store3(d, live, x + vel * c.h, v.s, S::x, i);
+    }
+  });
 }
 
 // A contact along n, `depth` deep, where `hit`: pushed out, then friction (the reference's
@@ -236,35 +247,62 @@ void finish(D d, const core::ClothView<float>& v, const core::Tethers& tethers,
             const core::ObstacleRow* rows, std::size_t nRows, const ClothLanes<D>& c) {
   using S = core::ClothStreams;
   using V = LaneOf<D>;
-  for (std::size_t i = 0; i < v.slots; i += Lanes(d)) {
-    const auto live = Gt(LoadU(d, v.s[S::w] + i), c.zero);
-    if (AllFalse(d, live)) continue;
-    const Vec3L<V> p = load3(d, v.s, S::px, i), vel = load3(d, v.s, S::vx, i);
-    const Vec3L<V> predicted = p + vel * c.h;
-    Vec3L<V> x = load3(d, v.s, S::x, i);
-    if (tethers.anchor) {
-      const V len = LoadU(d, tethers.length + i);
-      const Vec3L<V> anchor = load3(d, v.s, S::ax, i);
-      const Vec3L<V> e = x - anchor;
-      const V l2 = dot(e, e);
-      const auto over = And(Ge(len, c.zero), Gt(l2, len * len));
-      if (!AllFalse(d, over)) x = IfThenElse(over, anchor + e * (len / Sqrt(l2)), x);
+  forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; i += Lanes(d)) {
+      const auto live = Gt(LoadU(d, v.s[S::w] + i), c.zero);
+      if (AllFalse(d, live)) continue;
+      const Vec3L<V> p = load3(d, v.s, S::px, i), vel = load3(d, v.s, S::vx, i);
+      const Vec3L<V> predicted = p + vel * c.h;
+      Vec3L<V> x = load3(d, v.s, S::x, i);
+      if (tethers.anchor) {
+        const V len = LoadU(d, tethers.length + i);
+        const Vec3L<V> anchor = load3(d, v.s, S::ax, i);
+        const Vec3L<V> e = x - anchor;
+        const V l2 = dot(e, e);
+        const auto over = And(Ge(len, c.zero), Gt(l2, len * len));
+        if (!AllFalse(d, over)) x = IfThenElse(over, anchor + e * (len / Sqrt(l2)), x);
+      }
+      for (std::size_t r = 0; r < nRows; ++r) collide(d, rows[r], c, live, p, x);
+      store3(d, live, x, v.s, S::x, i);
+      store3(d, live, vel + (x - predicted) * c.invH, v.s, S::vx, i);
     }
-    for (std::size_t r = 0; r < nRows; ++r) collide(d, rows[r], c, live, p, x);
-    store3(d, live, x, v.s, S::x, i);
-    store3(d, live, vel + (x - predicted) * c.invH, v.s, S::vx, i);
-  }
+  });
 }
 
-// ---- the springs
-// ----------------------------------------------------------------------------------- Ends as
-// contiguous runs from slots ia and ib (a grid's row pair, or one lane).
+// ---- the springs --------------------------------------------------------------------------------
+inline std::uint64_t maskBits(ScalarLane, bool m) { return m; }
+template <class D, class M>
+HWY_INLINE std::uint64_t maskBits(D d, M m) {
+  std::uint8_t bytes[8] = {};
+  hn::StoreMaskBits(d, m, bytes);
+  std::uint64_t bits = 0;
+  for (int k = 0; k < 8; ++k) bits |= std::uint64_t(bytes[k]) << (8 * k);
+  return bits;
+}
+
+// Writes the lanes of m only (storeWhere may write the others back unchanged).
+inline void storeOnly(ScalarLane, bool m, float v, float* p) { storeWhere(ScalarLane(), m, v, p); }
+template <class D, class M, class V>
+HWY_INLINE void storeOnly(D d, M m, V v, float* p) {
+#if HWY_TARGET <= HWY_AVX3
+  hn::BlendedStore(v, m, d, p);
+#else
+  alignas(64) float lanes[16] = {};
+  Store(v, d, lanes);
+  const std::uint64_t bits = maskBits(d, m);
+  for (std::size_t l = 0; l < Lanes(d); ++l)
+    if (bits >> l & 1) p[l] = lanes[l];
+#endif
+}
+
+// Ends as contiguous runs from slots ia and ib (a grid's row pair, or one lane).
 template <class D>
 struct RunEnds {
   using V = LaneOf<D>;
   D d;
   float* const* s;
   std::size_t ia, ib;
+  bool strict;  // b's run writes no lane outside the mask (it spills into another pair's row)
   V a(std::size_t f) const { return LoadU(d, s[f] + ia); }
   V b(std::size_t f) const { return LoadU(d, s[f] + ib); }
   Vec3L<V> a3(std::size_t f) const { return load3(d, s, f, ia); }
@@ -275,19 +313,12 @@ struct RunEnds {
   }
   template <class M>
   void putB3(std::size_t f, M m, const Vec3L<V>& v) const {
-    store3(d, m, v, s, f, ib);
+    if (strict)
+      for (int k = 0; k < 3; ++k) storeOnly(d, m, v[k], s[f + k] + ib);
+    else
+      store3(d, m, v, s, f, ib);
   }
 };
-
-inline std::uint64_t maskBits(ScalarLane, bool m) { return m; }
-template <class D, class M>
-HWY_INLINE std::uint64_t maskBits(D d, M m) {
-  std::uint8_t bytes[8] = {};
-  hn::StoreMaskBits(d, m, bytes);
-  std::uint64_t bits = 0;
-  for (int k = 0; k < 8; ++k) bits |= std::uint64_t(bytes[k]) << (8 * k);
-  return bits;
-}
 
 // n lanes of field[idx[l]]. Lanes past n read slot idx[l] too (the index streams are padded with
 // valid slots).
@@ -321,7 +352,7 @@ struct IndexedEnds {
   }
   template <class M>
   static void scatter(D d, M m, V v, float* field, const std::uint32_t* idx, std::size_t n) {
-    alignas(64) float lanes[kMax];
+    alignas(64) float lanes[kMax] = {};
     Store(v, d, lanes);
     const std::uint64_t bits = maskBits(d, m);
     for (std::size_t l = 0; l < n; ++l)
@@ -356,18 +387,20 @@ void networkBatch(D d, const core::ClothView<float>& v, const core::SpringNetwor
                   std::size_t begin, std::size_t end, const ClothLanes<D>& c,
                   const core::ClothStepParams& p) {
   const std::size_t L = Lanes(d);
-  for (std::size_t k = begin; k < end; k += L) {
-    const std::size_t n = std::min(L, end - k);
-    const IndexedEnds<D> ends{d, v.s, net.a + k, net.b + k, n};
-    SpringLanes<LaneOf<D>> s;
-    s.rest = LoadU(d, net.rest + k);
-    s.alpha = LoadU(d, net.compliance + k) * Set(d, p.invH2);
-    s.gamma = LoadU(d, net.compliance + k) * LoadU(d, net.damping + k) * Set(d, p.invH);
-    s.gamma1 = c.one + s.gamma;
-    s.stiffness = LoadU(d, net.stiffness + k);
-    s.damping = LoadU(d, net.damping + k);
-    solvePairs<kXpbd, kDamped>(d, ends, s, FirstN(d, n), c);
-  }
+  forParts(begin, end, kPart, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; k += L) {
+      const std::size_t n = std::min(L, to - k);
+      const IndexedEnds<D> ends{d, v.s, net.a + k, net.b + k, n};
+      SpringLanes<LaneOf<D>> s;
+      s.rest = LoadU(d, net.rest + k);
+      s.alpha = LoadU(d, net.compliance + k) * Set(d, p.invH2);
+      s.gamma = LoadU(d, net.compliance + k) * LoadU(d, net.damping + k) * Set(d, p.invH);
+      s.gamma1 = c.one + s.gamma;
+      s.stiffness = LoadU(d, net.stiffness + k);
+      s.damping = LoadU(d, net.damping + k);
+      solvePairs<kXpbd, kDamped>(d, ends, s, FirstN(d, n), c);
+    }
+  });
 }
 
 // A grid's x+1 or x+2 family, one colour, by shuffles: each lane its own end of its spring.
@@ -442,34 +475,44 @@ void gridFamily(D d, const core::ClothView<float>& v, const core::SpringGrid& g,
       springLanes(d, 0, g.compliance[kind], g.stiffness[kind], g.damping[kind], p);
   const float* rest = g.rest[f];
   const std::size_t o = std::size_t(g.offset(f));
-  const auto run = [&](std::size_t ia, std::size_t n) {
+  const auto run = [&](std::size_t ia, std::size_t n, bool strict) {
     SpringLanes<LaneOf<D>> s = sl;
     s.rest = LoadU(d, rest + ia);
     const auto ok = And(FirstN(d, n), Ge(s.rest, c.zero));
-    if (!AllFalse(d, ok)) solvePairs<kXpbd, kDamped>(d, RunEnds<D>{d, v.s, ia, ia + o}, s, ok, c);
+    if (!AllFalse(d, ok))
+      solvePairs<kXpbd, kDamped>(d, RunEnds<D>{d, v.s, ia, ia + o, strict}, s, ok, c);
   };
   const bool along = f == G::kX || f == G::kBendX;  // pairs within a row
   const std::size_t span = f == G::kBendX || f == G::kBendZ ? 2 : 1;
   for (std::size_t colour = 0; colour < 2; ++colour) {
     if (along) {
-      if constexpr (kShuffles<D>) {
-        for (std::size_t i = colour * span; i < v.slots; i += L)
-          alongByShuffles<kXpbd, kDamped>(d, v.s, i, rest, sl, f == G::kX, c);
-      } else {
-        for (std::size_t i = colour * span; i < v.slots; i += 2 * span)
-          for (std::size_t q = i; q < i + span; ++q) run(q, 1);
-      }
+      const std::size_t first = colour * span;
+      forParts(first, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+        if constexpr (kShuffles<D>) {
+          for (std::size_t i = begin; i < end; i += L)
+            alongByShuffles<kXpbd, kDamped>(d, v.s, i, rest, sl, f == G::kX, c);
+        } else {
+          for (std::size_t i = begin; i < end; i += 2 * span)
+            for (std::size_t q = i; q < i + span; ++q) run(q, 1, false);
+        }
+      });
     } else {
-      for (std::size_t j = 0; j < g.rows; ++j) {
-        if ((j / span) % 2 != colour) continue;
-        for (std::size_t i = j * g.stride; i < (j + 1) * g.stride; i += L) run(i, L);
-      }
+      // This colour's rows: j with (j / span) % 2 == colour, a row a part. A shear family's run
+      // spills one lane into a row beyond the pair (the next row of the colour, or the row's own
+      // end): that vector writes no lane it does not change.
+      const std::size_t rows = (g.rows + 2 * span - 1 - colour * span) / (2 * span) * span;
+      forParts(0, rows, 1, [&](std::size_t k, std::size_t) {
+        const std::size_t j = k / span * 2 * span + colour * span + k % span;
+        if (j >= g.rows) return;
+        const std::size_t row = j * g.stride, rowEnd = row + g.stride;
+        for (std::size_t i = row; i < rowEnd; i += L)
+          run(i, L, (f == G::kShear && i + L >= rowEnd) || (f == G::kShearBack && i == row));
+      });
     }
   }
 }
 
-// ---- the step
-// ---------------------------------------------------------------------------------------
+// ---- the step -----------------------------------------------------------------------------------
 template <bool kXpbd, bool kDamped, class D>
 void springs(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
              const core::SpringGrid* grid, const ClothLanes<D>& c, const core::ClothStepParams& p) {
@@ -490,7 +533,10 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
   const ClothLanes<D> c(d, p);
   for (int sub = 0; sub < p.substeps; ++sub) {
     if constexpr (!kXpbd) {
-      for (std::size_t k = 0; k < 3; ++k) std::fill_n(v.s[S::fx + k], v.slots, 0.0f);
+      forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = 0; k < 3; ++k)
+          std::fill(v.s[S::fx + k] + begin, v.s[S::fx + k] + end, 0.0f);
+      });
       springs<kXpbd, kDamped>(d, v, net, grid, c, p);
     }
     predict<kXpbd>(d, v, c);
@@ -499,19 +545,25 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
   }
 }
 
-// The step: the tethers' anchors copied (no substep moves a pinned particle), then the substeps.
+// The step: the tethers' anchors copied (no substep moves a pinned particle), then the substeps,
+// in one parallel region of `threads` threads whose passes share out their parts.
 template <class D>
 void stepClothT(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
                 const core::SpringGrid* grid, const core::Tethers& t, const core::ObstacleRow* rows,
-                std::size_t nRows, const core::ClothStepParams& p) {
+                std::size_t nRows, const core::ClothStepParams& p, int threads) {
   using S = core::ClothStreams;
-  if (t.anchor)
-    for (std::size_t i = 0; i < v.slots; ++i)
-      if (t.length[i] >= 0)
-        for (std::size_t k = 0; k < 3; ++k) v.s[S::ax + k][i] = v.s[S::x + k][t.anchor[i]];
   const bool xpbd = p.model == core::ClothStepParams::kXpbd;
-  if (xpbd && p.damped) substeps<true, true>(d, v, net, grid, t, rows, nRows, p);
-  if (xpbd && !p.damped) substeps<true, false>(d, v, net, grid, t, rows, nRows, p);
-  if (!xpbd && p.damped) substeps<false, true>(d, v, net, grid, t, rows, nRows, p);
-  if (!xpbd && !p.damped) substeps<false, false>(d, v, net, grid, t, rows, nRows, p);
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    if (t.anchor)
+      forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          if (t.length[i] >= 0)
+            for (std::size_t k = 0; k < 3; ++k) v.s[S::ax + k][i] = v.s[S::x + k][t.anchor[i]];
+      });
+    if (xpbd && p.damped) substeps<true, true>(d, v, net, grid, t, rows, nRows, p);
+    if (xpbd && !p.damped) substeps<true, false>(d, v, net, grid, t, rows, nRows, p);
+    if (!xpbd && p.damped) substeps<false, true>(d, v, net, grid, t, rows, nRows, p);
+    if (!xpbd && !p.damped) substeps<false, false>(d, v, net, grid, t, rows, nRows, p);
+  }
 }

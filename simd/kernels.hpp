@@ -332,6 +332,7 @@ struct ClothStepInput {
   const core::ObstacleRow* rows;  // planes, spheres and OBBs (AABBs as OBBs); meshes skipped
   std::size_t nRows;
   core::ClothStepParams params;
+  int threads;  // OpenMP threads (1: none); the result does not depend on it
 };
 extern const Kernel<void(const ClothStepInput&)> stepCloth, stepClothAutovec;
 

@@ -92,8 +92,14 @@ Cloth::Cloth(std::span<const Vec3f> positions, std::span<const float> invMass,
   validate(settings, where);
   settings_ = settings;
   springs_.assign(springs.begin(), springs.end());
-  for (std::size_t k = 0; k < springs.size(); ++k)
-    validateSpring(springs[k], positions.size(), springWhere(where, k));
+  for (std::size_t k = 0; k < springs.size(); ++k) {
+    const Spring& x = springs[k];
+    const bool ok = x.a < positions.size() && x.b < positions.size() && x.a != x.b && x.rest >= 0 &&
+                    x.rest <= kMaxCoordinate && x.stiffness > 0 &&
+                    (x.stiffness == kRigid || x.stiffness <= kMaxCoordinate) && x.damping >= 0 &&
+                    x.damping <= kMaxCoordinate;
+    if (!ok) validateSpring(x, positions.size(), springWhere(where, k));  // throws, saying why
+  }
   build(positions, invMass, batches);
 }
 
@@ -137,7 +143,8 @@ Cloth Cloth::grid(const ClothGrid& g, const ClothSettings& settings) {
         }
   }
   for (std::size_t k = 0; k < c.springs_.size(); ++k)
-    detail::requireInRange(c.springs_[k].rest, springWhere(where, k), "rest");
+    if (!(c.springs_[k].rest <= kMaxCoordinate))
+      detail::requireInRange(c.springs_[k].rest, springWhere(where, k), "rest");
   c.build(g.positions, g.invMass, batches);
   return c;
 }
@@ -150,6 +157,9 @@ void Cloth::build(std::span<const Vec3f> positions, std::span<const float> invMa
   require(invMass.size() == count_, invMass.size(), where, "invMass.size()",
           "must be the number of positions");
   for (std::size_t i = 0; i < count_; ++i) {
+    const bool ok = (positions[i].array().abs() <= kMaxCoordinate).all() && invMass[i] >= 0 &&
+                    invMass[i] <= kMaxCoordinate;
+    if (ok) continue;  // the message is built for a bad value only
     const std::string at = where + ": particle " + std::to_string(i);
     detail::requireFiniteField(positions[i], at, "position");
     detail::requireInRange(invMass[i], at, "invMass");

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include <omp.h>
+
 #include "simd/kernels.hpp"
 #include "src/cloth/internals.hpp"
 #include "src/core/on_path.hpp"
@@ -83,7 +85,7 @@ core::ClothStepParams clothParams(const Cloth& cloth, float dt, int substeps) {
 }
 
 std::size_t stepCloth(Cloth& cloth, std::span<const core::ObstacleRow> rows, float dt, int substeps,
-                      const std::string& where) {
+                      int threads, const std::string& where) {
   const core::ClothView<float> v = Internals::view(cloth);
   // The positions and velocities kept to undo a step that would leave the supported range.
   std::vector<float> kept(6 * v.slots);
@@ -97,7 +99,10 @@ std::size_t stepCloth(Cloth& cloth, std::span<const core::ObstacleRow> rows, flo
   } else {
     const core::SpringGrid grid = Internals::grid(cloth);
     const auto& kernel = plainLoopsActive() ? simd::stepClothAutovec : simd::stepCloth;
-    kernel({v, net, cloth.isGrid() ? &grid : nullptr, tethers, rows.data(), rows.size(), params});
+    // A small cloth's passes are shorter than the threads' start and barriers.
+    const int t = v.slots < 8192 ? 1 : threads > 0 ? threads : omp_get_max_threads();
+    kernel(
+        {v, net, cloth.isGrid() ? &grid : nullptr, tethers, rows.data(), rows.size(), params, t});
   }
   for (std::size_t f = 0; f < 6; ++f)
     for (std::size_t i = 0; i < v.slots; ++i)

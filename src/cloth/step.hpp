@@ -22,10 +22,11 @@ int clothSubsteps(const Cloth& cloth, float dt, const std::string& where);
 
 core::ClothStepParams clothParams(const Cloth& cloth, float dt, int substeps);
 
-// One step of dt (clothSubsteps() first: it throws, this does not, for valid input). If a
+// One step of dt on `threads` OpenMP threads (0: OpenMP's default; the result does not depend on
+// it) (clothSubsteps() first: it throws, this does not, for valid input). If a
 // particle would leave the supported range, nothing moves and it throws Error naming it. Returns
 // the spring updates done (springs times substeps).
 std::size_t stepCloth(Cloth& cloth, std::span<const core::ObstacleRow> rows, float dt, int substeps,
-                      const std::string& where);
+                      int threads, const std::string& where);
 
 }  // namespace simdphys::detail
