@@ -139,10 +139,28 @@ TEST_P(Cloths, PinnedParticlesNeverMove) {
   }
 }
 
-// W3 at n = 48 (a quarter of the cost of the default), the defaults, 300 frames: the targets of
-// the benchmark at n = 128, on every path: Bullet's mean stretch at 30 iterations (0.0164), no
-// deeper in the sphere than the margin, finite. And every frame's depth counts.
-TEST_P(Cloths, W3HoldsAtTheDefaults) {
+// A 24 x 24 corner of W3's cloth (1.15 m wide) dropped onto W3's sphere for 2 s, on every path:
+// never deeper in the true sphere than rounding (the margin, 0.01, is kept outside it).
+TEST_P(Cloths, NothingEntersTheSphere) {
+  const workloads::ClothWorkload w = workloads::makeClothWorkload(24);
+  World world;
+  world.obstacles().add(workloads::kClothSphere);
+  const Handle h = world.addCloth(Cloth::grid(workloads::clothGrid(w)));
+  double deepest = 0;
+  for (int f = 0; f < 120; ++f) {
+    world.step();
+    deepest = std::max(
+        deepest, workloads::spherePenetration(workloads::kClothSphere, world.cloth(h).positions()));
+  }
+  // Rounding: 1e-6 of the radius.
+  EXPECT_LE(deepest, 1e-6);
+}
+
+// W3 at n = 48 (a seventh of the cost of the default), the defaults, 300 frames, on the active
+// path (every path steps as the reference does, bit for bit: cloth_kernel_test): the targets of
+// the benchmark at n = 128: Bullet's mean stretch at 30 iterations (0.0164), no deeper in the
+// sphere than rounding at any frame, finite.
+TEST(Cloth, W3HoldsAtTheDefaults) {
   const workloads::ClothWorkload w = workloads::makeClothWorkload(48);
   World world(WorldSettings{workloads::kClothFrameTime, 1, 0});
   world.obstacles().add(workloads::kClothSphere);
@@ -156,9 +174,7 @@ TEST_P(Cloths, W3HoldsAtTheDefaults) {
   const std::vector<Vec3f> x = world.cloth(h).positions();
   ASSERT_TRUE(workloads::allFinite(x));
   EXPECT_LT(workloads::clothStretch(w, x).mean, 0.0164);
-  // The margin (0.01) is kept outside the true sphere: nothing enters it beyond rounding (1e-6
-  // of the radius).
-  EXPECT_LE(deepest, 1e-6);
+  EXPECT_LE(deepest, 1e-6);  // rounding: 1e-6 of the radius
 }
 
 TEST_P(Cloths, AFastClothDoesNotPassThroughAThinBox) {
@@ -175,7 +191,7 @@ TEST_P(Cloths, AFastClothDoesNotPassThroughAThinBox) {
   for (const Vec3f& p : world.cloth(h).positions()) EXPECT_GT(p.y(), 1.005f);
 }
 
-TEST_P(Cloths, HardCasesStayFinite) {
+TEST(Cloth, HardCasesStayFinite) {
   World world;
   world.obstacles().add(Plane{Vec3f(0, 1, 0), 0});
   // A chain of 100 rigid links, horizontal, pinned at one end, with heavy masses hanging from
@@ -208,7 +224,7 @@ TEST_P(Cloths, HardCasesStayFinite) {
     }
   const Handle fold = world.addCloth(Cloth(folded, cw.invMass, workloads::clothSprings(cw)));
   world.setSettings({0.05f, 1, 0});
-  for (int f = 0; f < 100; ++f) world.step();
+  for (int f = 0; f < 40; ++f) world.step();  // 2 s
   for (const Handle h : {chain, stiff, fold})
     EXPECT_TRUE(workloads::allFinite(world.cloth(h).positions()));
   // The tethers hold the chain's reach: no particle beyond its rest distance along the chain
@@ -221,7 +237,7 @@ TEST_P(Cloths, HardCasesStayFinite) {
   for (const Vec3f& q : x) EXPECT_GE(q.y(), 0.0f);
 }
 
-TEST_P(Cloths, AChainOf100LinksHangsAtItsLength) {
+TEST(Cloth, AChainOf100LinksHangsAtItsLength) {
   // 100 rigid links of 0.1 m and mass 1, released horizontal from a pin: after 3 s of swinging, at
   // the defaults, every link within 1% of its length.
   std::vector<Vec3f> p;

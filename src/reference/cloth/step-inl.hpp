@@ -114,12 +114,12 @@ void collide(const core::ObstacleRow& row, const Vec3<T>& p, Vec3<T>& x, T margi
         const T pen = e - std::abs(q0[k]);
         if (pen < least) least = pen, nearest = k;
       }
+      if (outside && !(enter <= exit && enter >= 0 && enter <= 1)) return;  // not crossed
       const int k = outside ? face : nearest;
       const T side = q0[k] < 0 ? T(-1) : T(1);
       n = axes[k] * side;
       depth = T(row.v[3 + k]) + margin - side * q[k];
-      const bool crossed = enter <= exit && enter >= 0 && enter <= 1;
-      if (!(outside ? crossed : depth > 0)) return;
+      if (!outside && !(depth > 0)) return;
       break;
     }
     default:
