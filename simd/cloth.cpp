@@ -23,7 +23,7 @@ SIMDPHYS_TARGET_BEGIN();
 
 void StepCloth(const ClothStepInput& in) {
   stepClothT(hn::ScalableTag<float>(), in.view, in.network, in.grid, in.tethers, in.rows, in.nRows,
-             in.params, in.threads);
+             in.queries, in.params, in.threads);
 }
 
 SIMDPHYS_TARGET_END();

@@ -23,7 +23,8 @@ SIMDPHYS_TARGET_BEGIN();
 #include "simd/cloth_step-inl.hpp"
 
 void StepClothAutovec(const ClothStepInput& in) {
-  stepClothT(ScalarLane(), in.view, in.network, in.grid, in.tethers, in.rows, in.nRows, in.params, in.threads);
+  stepClothT(ScalarLane(), in.view, in.network, in.grid, in.tethers, in.rows, in.nRows, in.queries,
+             in.params, in.threads);
 }
 
 SIMDPHYS_TARGET_END();

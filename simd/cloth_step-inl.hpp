@@ -172,8 +172,34 @@ HWY_INLINE void contact(const ClothLanes<D>& c, M hit, const Vec3L<V>& n, V dept
   x = IfThenElse(hit, IfThenElse(Gt(tl, c.zero), pushed - tangent * scale, pushed), x);
 }
 
+// A mesh row's contacts: its entries asked of the library lane by lane (the reference's query).
 template <class D, class V, class M>
-HWY_INLINE void collide(D d, const core::ObstacleRow& row, const ClothLanes<D>& c, M live,
+void meshContacts(D d, std::uint32_t index, const core::ObstacleQueries& q, const ClothLanes<D>& c,
+                  M live, const Vec3L<V>& p, Vec3L<V>& x) {
+  const Vec3L<V> dir = x - p;
+  const V len = Sqrt(dot(dir, dir));
+  const auto moving = And(live, Gt(len, c.zero));
+  if (AllFalse(d, moving)) return;
+  const Vec3L<V> ext = dir * ((len + c.margin) / len);
+  constexpr std::size_t kMax = 16;
+  const std::size_t L = Lanes(d);
+  alignas(64) float from[3 * kMax], along[3 * kMax], lanes[kMax], s[kMax], normal[3 * kMax],
+      hit[kMax];
+  for (int k = 0; k < 3; ++k) Store(p[k], d, from + k * L), Store(ext[k], d, along + k * L);
+  Store(IfThenElse(moving, c.one, c.zero), d, lanes);
+  q.meshEntry(q.context, index, L, from, along, lanes, s, normal, hit);
+  for (std::size_t l = 0; l < L; ++l)
+    if (lanes[l] == 0 || hit[l] == 0)
+      s[l] = 0, hit[l] = 0, normal[l] = normal[L + l] = normal[2 * L + l] = 0;
+  const Vec3L<V> n{{Load(d, normal), Load(d, normal + L), Load(d, normal + 2 * L)}};
+  const V depth = c.margin - dot(n, x - (p + ext * Load(d, s)));
+  const auto met = And(And(moving, Gt(Load(d, hit), c.zero)), Gt(depth, c.zero));
+  if (!AllFalse(d, met)) contact(c, met, n, depth, p, x);
+}
+
+template <class D, class V, class M>
+HWY_INLINE void collide(D d, const core::ObstacleRow& row, std::uint32_t index,
+                        const core::ObstacleQueries* queries, const ClothLanes<D>& c, M live,
                         const Vec3L<V>& p, Vec3L<V>& x) {
   const auto at = [&](int k) { return splat3(d, row.v + k); };
   switch (row.kind) {
@@ -236,15 +262,19 @@ HWY_INLINE void collide(D d, const core::ObstacleRow& row, const ClothLanes<D>& 
       if (!AllFalse(d, hit)) contact(c, hit, n * side, depth, p, x);
       return;
     }
+    case core::ObstacleRow::kMesh:
+      if (queries) meshContacts(d, index, *queries, c, live, p, x);
+      return;
     default:
-      return;  // meshes: not met by cloth
+      return;
   }
 }
 
 // Tethers, obstacles and the velocity changed by what moved the particle off its prediction.
 template <class D>
 void finish(D d, const core::ClothView<float>& v, const core::Tethers& tethers,
-            const core::ObstacleRow* rows, std::size_t nRows, const ClothLanes<D>& c) {
+            const core::ObstacleRow* rows, std::size_t nRows, const core::ObstacleQueries* queries,
+            const ClothLanes<D>& c) {
   using S = core::ClothStreams;
   using V = LaneOf<D>;
   forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
@@ -262,7 +292,8 @@ void finish(D d, const core::ClothView<float>& v, const core::Tethers& tethers,
         const auto over = And(Ge(len, c.zero), Gt(l2, len * len));
         if (!AllFalse(d, over)) x = IfThenElse(over, anchor + e * (len / Sqrt(l2)), x);
       }
-      for (std::size_t r = 0; r < nRows; ++r) collide(d, rows[r], c, live, p, x);
+      for (std::size_t r = 0; r < nRows; ++r)
+        collide(d, rows[r], std::uint32_t(r), queries, c, live, p, x);
       store3(d, live, x, v.s, S::x, i);
       store3(d, live, vel + (x - predicted) * c.invH, v.s, S::vx, i);
     }
@@ -528,7 +559,8 @@ void springs(D d, const core::ClothView<float>& v, const core::SpringNetwork& ne
 template <bool kXpbd, bool kDamped, class D>
 void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
               const core::SpringGrid* grid, const core::Tethers& t, const core::ObstacleRow* rows,
-              std::size_t nRows, const core::ClothStepParams& p) {
+              std::size_t nRows, const core::ObstacleQueries* queries,
+              const core::ClothStepParams& p) {
   using S = core::ClothStreams;
   const ClothLanes<D> c(d, p);
   for (int sub = 0; sub < p.substeps; ++sub) {
@@ -541,7 +573,7 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
     }
     predict<kXpbd>(d, v, c);
     if constexpr (kXpbd) springs<kXpbd, kDamped>(d, v, net, grid, c, p);
-    finish(d, v, t, rows, nRows, c);
+    finish(d, v, t, rows, nRows, queries, c);
   }
 }
 
@@ -550,7 +582,8 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
 template <class D>
 void stepClothT(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
                 const core::SpringGrid* grid, const core::Tethers& t, const core::ObstacleRow* rows,
-                std::size_t nRows, const core::ClothStepParams& p, int threads) {
+                std::size_t nRows, const core::ObstacleQueries* queries,
+                const core::ClothStepParams& p, int threads) {
   using S = core::ClothStreams;
   const bool xpbd = p.model == core::ClothStepParams::kXpbd;
 #pragma omp parallel num_threads(threads) if (threads > 1)
@@ -561,9 +594,9 @@ void stepClothT(D d, const core::ClothView<float>& v, const core::SpringNetwork&
           if (t.length[i] >= 0)
             for (std::size_t k = 0; k < 3; ++k) v.s[S::ax + k][i] = v.s[S::x + k][t.anchor[i]];
       });
-    if (xpbd && p.damped) substeps<true, true>(d, v, net, grid, t, rows, nRows, p);
-    if (xpbd && !p.damped) substeps<true, false>(d, v, net, grid, t, rows, nRows, p);
-    if (!xpbd && p.damped) substeps<false, true>(d, v, net, grid, t, rows, nRows, p);
-    if (!xpbd && !p.damped) substeps<false, false>(d, v, net, grid, t, rows, nRows, p);
+    if (xpbd && p.damped) substeps<true, true>(d, v, net, grid, t, rows, nRows, queries, p);
+    if (xpbd && !p.damped) substeps<true, false>(d, v, net, grid, t, rows, nRows, queries, p);
+    if (!xpbd && p.damped) substeps<false, true>(d, v, net, grid, t, rows, nRows, queries, p);
+    if (!xpbd && !p.damped) substeps<false, false>(d, v, net, grid, t, rows, nRows, queries, p);
   }
 }

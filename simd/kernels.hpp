@@ -329,8 +329,9 @@ struct ClothStepInput {
   core::SpringNetwork network;
   const core::SpringGrid* grid;
   core::Tethers tethers;
-  const core::ObstacleRow* rows;  // planes, spheres and OBBs (AABBs as OBBs); meshes skipped
+  const core::ObstacleRow* rows;  // planes, spheres, OBBs (AABBs as OBBs) and meshes
   std::size_t nRows;
+  const core::ObstacleQueries* queries;  // a mesh row's entries (null: no mesh)
   core::ClothStepParams params;
   int threads;  // OpenMP threads (1: none); the result does not depend on it
 };

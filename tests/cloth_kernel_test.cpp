@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,8 +38,11 @@ ClothGrid sheet(std::size_t nx, std::size_t nz, const SpringKindSettings& kind) 
 }
 
 // Every obstacle kind cloth meets: the sphere it drapes over, a ground plane, a box and a tilted
-// box under its edges, and a mesh (skipped by cloth).
+// box under its edges, and a bumpy mesh under a corner.
 void addObstacles(Obstacles& o) {
+  o.add(std::make_shared<const MeshBvh>(
+      heightfieldMesh(7, 7, -0.7, 0.0, -0.7, 0.0,
+                      [](double x, double z) { return 1.5 + 0.1 * x + 0.04 * std::sin(9 * z); })));
   o.add(Sphere{Vec3f(0.05f, 1.1f, 0.1f), 0.35f});
   o.add(Plane{Vec3f(0, 1, 0), -0.8f});
   o.add(Aabb{Vec3f(0.3f, 0.7f, -0.7f), Vec3f(0.7f, 1.45f, -0.2f)});

@@ -20,10 +20,11 @@
 // Tethers (long-range attachments, as in Jolt's soft bodies and NvCloth): each free particle is
 // kept within its rest distance along the springs of the nearest pinned particle, which bounds
 // the stretch that a few substeps leave in a heavy cloth.
-// Collision: each particle is kept `margin` outside every plane, sphere, AABB and OBB obstacle
-// (the box test follows the path of the substep, so a fast particle does not pass through a thin
-// box), with Coulomb friction. Triangle-mesh obstacles are not yet met by cloth, and a cloth does
-// not collide with itself or other cloths.
+// Collision: each particle is kept `margin` outside every obstacle of the world (obstacles.hpp):
+// planes, spheres, AABBs and OBBs, and two-sided triangle meshes (through each mesh's own BVH).
+// The tests follow the path of the substep (a box's slabs, a mesh's raycast), so a fast particle
+// does not pass through a thin box or a mesh; Coulomb friction acts at every contact. A cloth does
+// not collide with itself or with other cloths.
 #pragma once
 
 #include <cstddef>

@@ -4,6 +4,7 @@
 #include "src/cloth/internals.hpp"
 #include "src/cloth/step.hpp"
 #include "src/reference/cloth/step-inl.hpp"
+#include "src/world/obstacle_rows.hpp"
 #include "testing/cloth.hpp"
 
 namespace simdphys::test {
@@ -20,12 +21,13 @@ void ClothD::step(const Cloth& cloth, const World& world) {
   core::ClothView<double> v{{}, s_[0].size()};
   for (std::size_t f = 0; f < core::ClothStreams::kCount; ++f) v.s[f] = s_[f].data();
   const std::vector<core::ObstacleRow> rows = detail::clothRows(world.obstacles());
+  const std::optional<core::ObstacleQueries> q = detail::obstacleQueries(world.obstacles());
   const WorldSettings& w = world.settings();
   const float dt = w.timeStep / float(w.substeps);
   const int substeps = detail::clothSubsteps(cloth, dt, "test::ClothD::step");
   for (int sub = 0; sub < w.substeps; ++sub)
     reference::stepCloth<double>(v, Internals::network(cloth), Internals::tethers(cloth), rows,
-                                 detail::clothParams(cloth, dt, substeps));
+                                 q ? &*q : nullptr, detail::clothParams(cloth, dt, substeps));
 }
 
 std::vector<Vec3d> ClothD::positions(const Cloth& cloth) const {

@@ -11,6 +11,7 @@
 #include "src/cloth/internals.hpp"
 #include "src/core/on_path.hpp"
 #include "src/reference/cloth/step-inl.hpp"
+#include "src/world/obstacle_rows.hpp"
 
 namespace simdphys::detail {
 
@@ -18,30 +19,12 @@ using S = core::ClothStreams;
 using Internals = Cloth::Internals;
 
 std::vector<core::ObstacleRow> clothRows(const Obstacles& obstacles) {
-  std::vector<core::ObstacleRow> rows;
-  for (const ObstacleShape& shape : obstacles.shapes()) {
-    core::ObstacleRow row{};
-    if (const auto* p = std::get_if<Plane>(&shape)) {
-      row.kind = core::ObstacleRow::kPlane;
-      for (int k = 0; k < 3; ++k) row.v[k] = p->normal[k];
-      row.v[3] = p->d;
-    } else if (const auto* s = std::get_if<Sphere>(&shape)) {
-      row.kind = core::ObstacleRow::kSphere;
-      for (int k = 0; k < 3; ++k) row.v[k] = s->center[k];
-      row.v[3] = s->radius;
-    } else if (const auto* b = std::get_if<Aabb>(&shape)) {
-      row.kind = core::ObstacleRow::kObb;
-      const Vec3f c = b->center(), e = b->halfExtents();
-      for (int k = 0; k < 3; ++k) row.v[k] = c[k], row.v[3 + k] = e[k], row.v[6 + 4 * k] = 1;
-    } else if (const auto* o = std::get_if<Obb>(&shape)) {
-      row.kind = core::ObstacleRow::kObb;
-      for (int k = 0; k < 3; ++k) row.v[k] = o->center[k], row.v[3 + k] = o->halfExtents[k];
-      for (int c = 0; c < 3; ++c)
-        for (int k = 0; k < 3; ++k) row.v[6 + 3 * c + k] = o->axes(k, c);
-    } else {
-      continue;  // a mesh
-    }
-    rows.push_back(row);
+  std::vector<core::ObstacleRow> rows = obstacleRows(obstacles);
+  for (core::ObstacleRow& row : rows) {
+    if (row.kind != core::ObstacleRow::kAabb) continue;
+    // An AABB as an OBB of identity axes: one box test.
+    const Aabb box{Vec3f(row.v[0], row.v[1], row.v[2]), Vec3f(row.v[3], row.v[4], row.v[5])};
+    row = rowOf(Obb{box.center(), box.halfExtents(), Mat3f::Identity()});
   }
   return rows;
 }
@@ -84,8 +67,9 @@ core::ClothStepParams clothParams(const Cloth& cloth, float dt, int substeps) {
   return p;
 }
 
-std::size_t stepCloth(Cloth& cloth, std::span<const core::ObstacleRow> rows, float dt, int substeps,
-                      int threads, const std::string& where) {
+std::size_t stepCloth(Cloth& cloth, const Obstacles& obstacles,
+                      std::span<const core::ObstacleRow> rows, float dt, int substeps, int threads,
+                      const std::string& where) {
   const core::ClothView<float> v = Internals::view(cloth);
   // The positions and velocities kept to undo a step that would leave the supported range.
   std::vector<float> kept(6 * v.slots);
@@ -94,15 +78,17 @@ std::size_t stepCloth(Cloth& cloth, std::span<const core::ObstacleRow> rows, flo
   const core::ClothStepParams params = clothParams(cloth, dt, substeps);
   const core::SpringNetwork net = Internals::network(cloth);
   const core::Tethers tethers = Internals::tethers(cloth);
+  const std::optional<core::ObstacleQueries> queries = obstacleQueries(obstacles);
+  const core::ObstacleQueries* q = queries ? &*queries : nullptr;
   if (referencePathActive()) {
-    reference::stepCloth<float>(v, net, tethers, rows, params);
+    reference::stepCloth<float>(v, net, tethers, rows, q, params);
   } else {
     const core::SpringGrid grid = Internals::grid(cloth);
     const auto& kernel = plainLoopsActive() ? simd::stepClothAutovec : simd::stepCloth;
     // A small cloth's passes are shorter than the threads' start and barriers.
     const int t = v.slots < 8192 ? 1 : threads > 0 ? threads : omp_get_max_threads();
-    kernel(
-        {v, net, cloth.isGrid() ? &grid : nullptr, tethers, rows.data(), rows.size(), params, t});
+    kernel({v, net, cloth.isGrid() ? &grid : nullptr, tethers, rows.data(), rows.size(), q, params,
+            t});
   }
   for (std::size_t f = 0; f < 6; ++f)
     for (std::size_t i = 0; i < v.slots; ++i)

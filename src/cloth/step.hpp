@@ -11,8 +11,8 @@
 
 namespace simdphys::detail {
 
-// The obstacles as cloth meets them: planes, spheres and OBBs in order, AABBs as OBBs; meshes
-// left out (cloth.hpp).
+// The obstacles as cloth meets them, a row each in order: AABBs as OBBs, a mesh's row naming it by
+// its index (core::ObstacleQueries::meshEntry).
 std::vector<core::ObstacleRow> clothRows(const Obstacles& obstacles);
 
 // The substeps of a step of dt: the settings', raised for the mass-spring model to its stability
@@ -26,7 +26,8 @@ core::ClothStepParams clothParams(const Cloth& cloth, float dt, int substeps);
 // it) (clothSubsteps() first: it throws, this does not, for valid input). If a
 // particle would leave the supported range, nothing moves and it throws Error naming it. Returns
 // the spring updates done (springs times substeps).
-std::size_t stepCloth(Cloth& cloth, std::span<const core::ObstacleRow> rows, float dt, int substeps,
-                      int threads, const std::string& where);
+std::size_t stepCloth(Cloth& cloth, const Obstacles& obstacles,
+                      std::span<const core::ObstacleRow> rows, float dt, int substeps, int threads,
+                      const std::string& where);
 
 }  // namespace simdphys::detail

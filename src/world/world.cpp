@@ -99,7 +99,7 @@ void World::step() {
     for (int sub = 0; sub < settings_.substeps; ++sub)
       for (std::size_t c = 0; c < cloths_.size(); ++c)
         profile_.cloth.elements +=
-            detail::stepCloth(cloths_[c], rows, dt, clothSubsteps[c], settings_.threads,
+            detail::stepCloth(cloths_[c], obstacles_, rows, dt, clothSubsteps[c], settings_.threads,
                               "World::step: cloth " + std::to_string(c));
     profile_.cloth.seconds = std::chrono::duration<double>(Clock::now() - clothStart).count();
   }

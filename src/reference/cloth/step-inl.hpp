@@ -67,8 +67,13 @@ void springForce(const ClothState<T>& s, std::uint32_t a, std::uint32_t b, T res
 // The path p -> x of a free particle against one obstacle row: moved out to `margin` from the
 // surface, then its tangential motion limited by friction (position-based Coulomb: held when it
 // is below friction times the push, else shortened by that much).
+// A mesh (row `index`, through `queries`) is met along the path extended by the margin, so that a
+// particle within the margin of its surface meets it; it is kept the margin off the plane of the
+// triangle it meets, on the path's side (two-sided).
 template <class T>
-void collide(const core::ObstacleRow& row, const Vec3<T>& p, Vec3<T>& x, T margin, T friction) {
+void collide(const core::ObstacleRow& row, std::uint32_t index,
+             const core::ObstacleQueries* queries, const Vec3<T>& p, Vec3<T>& x, T margin,
+             T friction) {
   Vec3<T> n;
   T depth;
   const auto at = [&](int k) { return Vec3<T>(T(row.v[k]), T(row.v[k + 1]), T(row.v[k + 2])); };
@@ -122,8 +127,22 @@ void collide(const core::ObstacleRow& row, const Vec3<T>& p, Vec3<T>& x, T margi
       if (!outside && !(depth > 0)) return;
       break;
     }
+    case core::ObstacleRow::kMesh: {
+      const Vec3<T> dir = x - p;
+      const T len = std::sqrt(dir.dot(dir));
+      if (!queries || !(len > 0)) return;
+      const Vec3<T> ext = dir * ((len + margin) / len);
+      float from[3], along[3], live = 1, s = 0, normal[3] = {}, hit = 0;  // the mesh is float
+      for (int k = 0; k < 3; ++k) from[k] = float(p[k]), along[k] = float(ext[k]);
+      queries->meshEntry(queries->context, index, 1, from, along, &live, &s, normal, &hit);
+      if (hit == 0) return;
+      n = Vec3<T>(T(normal[0]), T(normal[1]), T(normal[2]));
+      depth = margin - n.dot(x - (p + ext * T(s)));
+      if (!(depth > 0)) return;
+      break;
+    }
     default:
-      return;  // meshes: not met by cloth (cloth.hpp)
+      return;
   }
   x = x + n * depth;
   const Vec3<T> moved = x - p;
@@ -136,7 +155,7 @@ void collide(const core::ObstacleRow& row, const Vec3<T>& p, Vec3<T>& x, T margi
 template <class T>
 void stepCloth(const core::ClothView<T>& v, const core::SpringNetwork& net,
                const core::Tethers& tethers, std::span<const core::ObstacleRow> rows,
-               const core::ClothStepParams& p) {
+               const core::ObstacleQueries* queries, const core::ClothStepParams& p) {
   using S = core::ClothStreams;
   const ClothState<T> s{v};
   const T h = T(p.h), invH = T(p.invH), invH2 = T(p.invH2), keep = T(p.keep);
@@ -181,7 +200,8 @@ void stepCloth(const core::ClothView<T>& v, const core::SpringNetwork& net,
         const T l2 = d.dot(d), len = T(tethers.length[i]);
         if (l2 > len * len) x = s.load(S::x, tethers.anchor[i]) + d * (len / std::sqrt(l2));
       }
-      for (const core::ObstacleRow& row : rows) collide<T>(row, x0, x, margin, friction);
+      for (std::uint32_t r = 0; r < rows.size(); ++r)
+        collide<T>(rows[r], r, queries, x0, x, margin, friction);
       s.store(S::x, i, x);
       s.store(S::vx, i, vel + (x - predicted) * invH);
     }
