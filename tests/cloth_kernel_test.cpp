@@ -76,7 +76,7 @@ State run(Cloth cloth, int steps, int threads = 0, int substeps = 4) {
   World world(WorldSettings{1.0f / 60, 1, threads});
   addObstacles(world.obstacles());
   const Handle h = world.addCloth(cloth);
-  for (int s = 0; s < steps; ++s) world.step();
+  for (int k = 0; k < steps; ++k) world.step();
   State st;
   const Cloth& c = world.cloth(h);
   for (std::uint32_t i = 0; i < c.size(); ++i)
