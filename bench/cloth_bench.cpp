@@ -150,6 +150,7 @@ void registerClothBenchmarks() {
     Model network = xpbd();
     network.name = "xpbd_network", network.network = true;
     registerPerPath("cloth", network.name, n, run(network, n, false), n == 128, frames);
+    if (n == 128) registerBestPath("cloth", "autovec_network", n, run(network, n, true), frames);
   }
   // Speed against error at n = 128 on the best path: XPBD over its substeps, with and without
   // tethers; the mass-spring model over its stiffness (its substeps follow the stability bound).

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -23,7 +24,7 @@ SIMDPHYS_TARGET_BEGIN();
 
 void StepCloth(const ClothStepInput& in) {
   stepClothT(hn::ScalableTag<float>(), in.view, in.network, in.grid, in.tethers, in.rows, in.nRows,
-             in.queries, in.params, in.threads);
+             in.queries, in.quads, in.params, in.threads);
 }
 
 SIMDPHYS_TARGET_END();

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -24,7 +25,7 @@ SIMDPHYS_TARGET_BEGIN();
 
 void StepClothAutovec(const ClothStepInput& in) {
   stepClothT(ScalarLane(), in.view, in.network, in.grid, in.tethers, in.rows, in.nRows, in.queries,
-             in.params, in.threads);
+             in.quads, in.params, in.threads);
 }
 
 SIMDPHYS_TARGET_END();

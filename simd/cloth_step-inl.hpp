@@ -351,22 +351,15 @@ struct RunEnds {
   }
 };
 
-// n lanes of field[idx[l]]. Lanes past n read slot idx[l] too (the index streams are padded with
-// valid slots).
+// n lanes of field[idx[l]], read one by one (faster than AVX2's and AVX-512's gathers here).
 inline float gatherLanes(ScalarLane, const float* field, const std::uint32_t* idx, std::size_t) {
   return field[idx[0]];
 }
 template <class D>
 HWY_INLINE LaneOf<D> gatherLanes(D d, const float* field, const std::uint32_t* idx, std::size_t n) {
-#if HWY_TARGET <= HWY_AVX2
-  (void)n;
-  const hn::RebindToSigned<D> di;
-  return hn::GatherIndex(d, field, hn::BitCast(di, hn::LoadU(hn::RebindToUnsigned<D>(), idx)));
-#else
   alignas(64) float lanes[16] = {};
   for (std::size_t l = 0; l < n; ++l) lanes[l] = field[idx[l]];
   return Load(d, lanes);
-#endif
 }
 
 // Ends read and written lane by lane through slot indices (a network's batch): `n` live lanes.
@@ -403,6 +396,114 @@ struct IndexedEnds {
   }
 };
 
+// Whether the lanes are a vector of at least four (shuffles, transposes), not one float.
+template <class D>
+inline constexpr bool kShuffles = !std::is_same_v<D, ScalarLane> && HWY_TARGET != HWY_SCALAR;
+
+#if HWY_TARGET != HWY_SCALAR  // vectors of four lanes at least
+// IndexedEnds whose positions and inverse masses come from and go to the slots' (x, y, z, w)
+// quads (ClothStepInput::quads): a spring's end is one 16-byte load, the lanes transposed by
+// LoadInterleaved4 (Box2D v3 gathers its bodies' states so), not four scalar loads.
+template <class D>
+struct QuadEnds : IndexedEnds<D> {
+  using V = LaneOf<D>;
+  using Base = IndexedEnds<D>;
+  float* quads;
+  Vec3L<V> xa, xb;
+  V wa, wb;
+  QuadEnds(const Base& base, float* q) : Base(base), quads(q) {
+    load(this->ia, xa, wa);
+    load(this->ib, xb, wb);
+  }
+  // The quads of lanes first, first + 4, first + 8, ... as the blocks of one vector.
+  template <class DB>
+  static auto blocks(DB db, const float* quads, const std::uint32_t* idx) {
+    if constexpr (hn::MaxLanes(DB()) == 4) {
+      return LoadU(db, quads + 4 * std::size_t(idx[0]));
+    } else {
+      const hn::Half<DB> dh;
+      return hn::Combine(db, blocks(dh, quads, idx + hn::MaxLanes(dh) / 4), blocks(dh, quads, idx));
+    }
+  }
+  // Built in registers (a stack copy would stall on store forwarding), then transposed block by
+  // block: lane 4 b + p of x, y, z, w from block b of vector p. Lanes past n read slot idx[l]
+  // (the index streams are padded with valid slots) and are never written.
+  void load(const std::uint32_t* idx, Vec3L<V>& x, V& w) const {
+    const D d = this->d;
+    alignas(64) std::uint32_t order[Base::kMax];  // lane 4 b + p's slot at p L / 4 + b
+    const std::size_t L = Lanes(d), B = L / 4;
+    for (std::size_t l = 0; l < L; ++l) order[(l % 4) * B + l / 4] = idx[l];
+    const V q0 = blocks(d, quads, order), q1 = blocks(d, quads, order + B);
+    const V q2 = blocks(d, quads, order + 2 * B), q3 = blocks(d, quads, order + 3 * B);
+    const V t0 = hn::InterleaveLower(d, q0, q1), t1 = hn::InterleaveLower(d, q2, q3);
+    const V t2 = hn::InterleaveUpper(d, q0, q1), t3 = hn::InterleaveUpper(d, q2, q3);
+    const hn::Repartition<double, D> d64;
+    const auto lo = [&](V a, V b) {
+      return hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, a), hn::BitCast(d64, b)));
+    };
+    const auto hi = [&](V a, V b) {
+      return hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, a), hn::BitCast(d64, b)));
+    };
+    x[0] = lo(t0, t1), x[1] = hi(t0, t1), x[2] = lo(t2, t3), w = hi(t2, t3);
+  }
+  template <class M>
+  void store(const std::uint32_t* idx, M m, const Vec3L<V>& x, V w) const {
+    alignas(64) float lanes[4 * Base::kMax];
+    hn::StoreInterleaved4(x[0], x[1], x[2], w, this->d, lanes);
+    constexpr std::size_t kL = hn::MaxLanes(D());
+    if (hn::AllTrue(this->d, m)) {  // the common case, unrolled
+      for (std::size_t l = 0; l < kL; ++l)
+        std::memcpy(quads + 4 * std::size_t(idx[l]), lanes + 4 * l, 16);
+      return;
+    }
+    const std::uint64_t bits = maskBits(this->d, m);
+    for (std::size_t l = 0; l < this->n; ++l)
+      if (bits >> l & 1) std::memcpy(quads + 4 * std::size_t(idx[l]), lanes + 4 * l, 16);
+  }
+  V a(std::size_t f) const { return f == core::ClothStreams::w ? wa : Base::a(f); }
+  V b(std::size_t f) const { return f == core::ClothStreams::w ? wb : Base::b(f); }
+  Vec3L<V> a3(std::size_t f) const { return f == core::ClothStreams::x ? xa : Base::a3(f); }
+  Vec3L<V> b3(std::size_t f) const { return f == core::ClothStreams::x ? xb : Base::b3(f); }
+  template <class M>
+  void putA3(std::size_t f, M m, const Vec3L<V>& v) const {
+    if (f == core::ClothStreams::x)
+      store(this->ia, m, v, wa);
+    else
+      Base::putA3(f, m, v);
+  }
+  template <class M>
+  void putB3(std::size_t f, M m, const Vec3L<V>& v) const {
+    if (f == core::ClothStreams::x)
+      store(this->ib, m, v, wb);
+    else
+      Base::putB3(f, m, v);
+  }
+};
+
+// The slots' positions and inverse masses as (x, y, z, w) quads, and back.
+template <class D>
+void toQuads(D d, const core::ClothView<float>& v, float* quads) {
+  using S = core::ClothStreams;
+  forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; i += Lanes(d))
+      hn::StoreInterleaved4(LoadU(d, v.s[S::x] + i), LoadU(d, v.s[S::y] + i),
+                            LoadU(d, v.s[S::z] + i), LoadU(d, v.s[S::w] + i), d, quads + 4 * i);
+  });
+}
+template <class D>
+void fromQuads(D d, const core::ClothView<float>& v, const float* quads) {
+  using S = core::ClothStreams;
+  forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; i += Lanes(d)) {
+      LaneOf<D> x, y, z, w;
+      hn::LoadInterleaved4(d, quads + 4 * i, x, y, z, w);
+      StoreU(x, d, v.s[S::x] + i), StoreU(y, d, v.s[S::y] + i), StoreU(z, d, v.s[S::z] + i);
+    }
+  });
+}
+
+#endif
+
 template <class D>
 HWY_INLINE SpringLanes<LaneOf<D>> springLanes(D d, float rest, float compliance, float stiffness,
                                               float damping, const core::ClothStepParams& p) {
@@ -415,13 +516,13 @@ HWY_INLINE SpringLanes<LaneOf<D>> springLanes(D d, float rest, float compliance,
 // One batch of a network, springs [begin, end).
 template <bool kXpbd, bool kDamped, class D>
 void networkBatch(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
-                  std::size_t begin, std::size_t end, const ClothLanes<D>& c,
+                  std::size_t begin, std::size_t end, float* quads, const ClothLanes<D>& c,
                   const core::ClothStepParams& p) {
   const std::size_t L = Lanes(d);
   forParts(begin, end, kPart, [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; k += L) {
       const std::size_t n = std::min(L, to - k);
-      const IndexedEnds<D> ends{d, v.s, net.a + k, net.b + k, n};
+      const IndexedEnds<D> indexed{d, v.s, net.a + k, net.b + k, n};
       SpringLanes<LaneOf<D>> s;
       s.rest = LoadU(d, net.rest + k);
       s.alpha = LoadU(d, net.compliance + k) * Set(d, p.invH2);
@@ -429,7 +530,14 @@ void networkBatch(D d, const core::ClothView<float>& v, const core::SpringNetwor
       s.gamma1 = c.one + s.gamma;
       s.stiffness = LoadU(d, net.stiffness + k);
       s.damping = LoadU(d, net.damping + k);
-      solvePairs<kXpbd, kDamped>(d, ends, s, FirstN(d, n), c);
+#if HWY_TARGET != HWY_SCALAR
+      if constexpr (kShuffles<D>)
+        if (quads) {
+          solvePairs<kXpbd, kDamped>(d, QuadEnds<D>(indexed, quads), s, FirstN(d, n), c);
+          continue;
+        }
+#endif
+      solvePairs<kXpbd, kDamped>(d, indexed, s, FirstN(d, n), c);
     }
   });
 }
@@ -467,9 +575,6 @@ HWY_INLINE void solveLanes(D d, float* const* s, std::size_t i, const float* res
     store3(d, ok, load3(d, s, S::fx, i) + dd * k, s, S::fx, i);
   }
 }
-
-template <class D>
-inline constexpr bool kShuffles = !std::is_same_v<D, ScalarLane> && HWY_TARGET != HWY_SCALAR;
 
 // Family x+1 (`next`: neighbouring lanes) or x+2 (lanes two apart in each block of four).
 template <bool kXpbd, bool kDamped, class D>
@@ -546,20 +651,34 @@ void gridFamily(D d, const core::ClothView<float>& v, const core::SpringGrid& g,
 // ---- the step -----------------------------------------------------------------------------------
 template <bool kXpbd, bool kDamped, class D>
 void springs(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
-             const core::SpringGrid* grid, const ClothLanes<D>& c, const core::ClothStepParams& p) {
+             const core::SpringGrid* grid, float* quads, const ClothLanes<D>& c,
+             const core::ClothStepParams& p) {
   if (grid) {
     for (std::uint32_t f = 0; f < core::SpringGrid::kFamilies; ++f)
       gridFamily<kXpbd, kDamped>(d, v, *grid, f, c, p);
-  } else {
-    for (std::size_t b = 0; b < net.batches; ++b)
-      networkBatch<kXpbd, kDamped>(d, v, net, net.batchBegin[b], net.batchBegin[b + 1], c, p);
+    return;
   }
+#if HWY_TARGET != HWY_SCALAR
+  if constexpr (kShuffles<D>) {
+    if (quads) toQuads(d, v, quads);
+  } else {
+    quads = nullptr;  // one lane: nothing to transpose
+  }
+#else
+  quads = nullptr;
+#endif
+  for (std::size_t b = 0; b < net.batches; ++b)
+    networkBatch<kXpbd, kDamped>(d, v, net, net.batchBegin[b], net.batchBegin[b + 1], quads, c, p);
+#if HWY_TARGET != HWY_SCALAR
+  if constexpr (kShuffles<D> && kXpbd)
+    if (quads) fromQuads(d, v, quads);
+#endif
 }
 
 template <bool kXpbd, bool kDamped, class D>
 void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
               const core::SpringGrid* grid, const core::Tethers& t, const core::ObstacleRow* rows,
-              std::size_t nRows, const core::ObstacleQueries* queries,
+              std::size_t nRows, const core::ObstacleQueries* queries, float* quads,
               const core::ClothStepParams& p) {
   using S = core::ClothStreams;
   const ClothLanes<D> c(d, p);
@@ -569,10 +688,10 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
         for (std::size_t k = 0; k < 3; ++k)
           std::fill(v.s[S::fx + k] + begin, v.s[S::fx + k] + end, 0.0f);
       });
-      springs<kXpbd, kDamped>(d, v, net, grid, c, p);
+      springs<kXpbd, kDamped>(d, v, net, grid, quads, c, p);
     }
     predict<kXpbd>(d, v, c);
-    if constexpr (kXpbd) springs<kXpbd, kDamped>(d, v, net, grid, c, p);
+    if constexpr (kXpbd) springs<kXpbd, kDamped>(d, v, net, grid, quads, c, p);
     finish(d, v, t, rows, nRows, queries, c);
   }
 }
@@ -582,7 +701,7 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
 template <class D>
 void stepClothT(D d, const core::ClothView<float>& v, const core::SpringNetwork& net,
                 const core::SpringGrid* grid, const core::Tethers& t, const core::ObstacleRow* rows,
-                std::size_t nRows, const core::ObstacleQueries* queries,
+                std::size_t nRows, const core::ObstacleQueries* queries, float* quads,
                 const core::ClothStepParams& p, int threads) {
   using S = core::ClothStreams;
   const bool xpbd = p.model == core::ClothStepParams::kXpbd;
@@ -594,9 +713,12 @@ void stepClothT(D d, const core::ClothView<float>& v, const core::SpringNetwork&
           if (t.length[i] >= 0)
             for (std::size_t k = 0; k < 3; ++k) v.s[S::ax + k][i] = v.s[S::x + k][t.anchor[i]];
       });
-    if (xpbd && p.damped) substeps<true, true>(d, v, net, grid, t, rows, nRows, queries, p);
-    if (xpbd && !p.damped) substeps<true, false>(d, v, net, grid, t, rows, nRows, queries, p);
-    if (!xpbd && p.damped) substeps<false, true>(d, v, net, grid, t, rows, nRows, queries, p);
-    if (!xpbd && !p.damped) substeps<false, false>(d, v, net, grid, t, rows, nRows, queries, p);
+    if (xpbd && p.damped) substeps<true, true>(d, v, net, grid, t, rows, nRows, queries, quads, p);
+    if (xpbd && !p.damped)
+      substeps<true, false>(d, v, net, grid, t, rows, nRows, queries, quads, p);
+    if (!xpbd && p.damped)
+      substeps<false, true>(d, v, net, grid, t, rows, nRows, queries, quads, p);
+    if (!xpbd && !p.damped)
+      substeps<false, false>(d, v, net, grid, t, rows, nRows, queries, quads, p);
   }
 }

@@ -332,6 +332,7 @@ struct ClothStepInput {
   const core::ObstacleRow* rows;  // planes, spheres, OBBs (AABBs as OBBs) and meshes
   std::size_t nRows;
   const core::ObstacleQueries* queries;  // a mesh row's entries (null: no mesh)
+  float* quads;  // scratch for a network's kernel: 4 floats a slot (x, y, z, w), or null
   core::ClothStepParams params;
   int threads;  // OpenMP threads (1: none); the result does not depend on it
 };

@@ -18,8 +18,9 @@
 //    2 sqrt(m / k): the step raises the substeps to the bound for the stiffest spring, or, past
 //    kMaxSubsteps, refuses with an Error that says so.
 // Tethers (long-range attachments, as in Jolt's soft bodies and NvCloth): each free particle is
-// kept within its rest distance along the springs of the nearest pinned particle, which bounds
-// the stretch that a few substeps leave in a heavy cloth.
+// kept within its straight rest distance of the pinned particle nearest along the rigid springs
+// (soft springs may stretch, so they carry no tether), which bounds the stretch that a few
+// substeps leave in a heavy cloth.
 // Collision: each particle is kept `margin` outside every obstacle of the world (obstacles.hpp):
 // planes, spheres, AABBs and OBBs, and two-sided triangle meshes (through each mesh's own BVH).
 // The tests follow the path of the substep (a box's slabs, a mesh's raycast), so a fast particle
@@ -155,6 +156,7 @@ class Cloth {
   // Tethers: per slot the anchor slot and the rest distance (-1: none).
   AlignedVector<std::uint32_t> anchor_;
   AlignedVector<float> tether_;
+  AlignedVector<float> quads_;  // the network kernel's scratch: (x, y, z, w) a slot
   // The explicit model's stability bound (src/cloth/step.cpp): Gershgorin bounds of the largest
   // squared frequency and damping rate, infinite with a rigid spring.
   double rate2_ = 0, dampRate_ = 0;

@@ -198,6 +198,7 @@ void Cloth::build(std::span<const Vec3f> positions, std::span<const float> invMa
   slots_ = isGrid() ? stride_ * nz_ : paddedSize(count_);
   const std::size_t room = slots_ + (isGrid() ? 2 * stride_ : 0) + 2 * kStreamPad;
   for (auto& field : s_) field.assign(room, 0.0f);
+  if (!isGrid()) quads_.assign(4 * room, 0.0f);
   for (std::uint32_t i = 0; i < count_; ++i) {
     const std::uint32_t p = slot(i, "Cloth");
     for (int k = 0; k < 3; ++k) s_[S::x + k][p] = s_[S::px + k][p] = positions[i][k];
@@ -234,13 +235,14 @@ void Cloth::build(std::span<const Vec3f> positions, std::span<const float> invMa
     if (invMass[i] > 0)
       rate2_ = std::max(rate2_, rate2[i]), dampRate_ = std::max(dampRate_, damp[i]);
 
-  // Tethers: each free particle to the pinned one nearest along the springs (Dijkstra from all
-  // pins at once, ties to the lower pin), at their straight rest distance.
+  // Tethers: each free particle to the pinned one nearest along the rigid springs (Dijkstra from
+  // all pins at once, ties to the lower pin), at their straight rest distance.
   anchor_.assign(room, 0), tether_.assign(room, -1.0f);
   for (std::uint32_t p = 0; p < room; ++p) anchor_[p] = p;
   std::vector<std::vector<std::pair<std::uint32_t, double>>> edges(count_);
-  for (const Spring& s : springs_)
-    edges[s.a].push_back({s.b, s.rest}), edges[s.b].push_back({s.a, s.rest});
+  for (const Spring& s : springs_)  // along rigid springs only: a soft one may stretch
+    if (s.stiffness == kRigid)
+      edges[s.a].push_back({s.b, s.rest}), edges[s.b].push_back({s.a, s.rest});
   using Item = std::tuple<double, std::uint32_t, std::uint32_t>;  // distance, pin, particle
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
   std::vector<double> dist(count_, HUGE_VAL);

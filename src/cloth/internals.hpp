@@ -33,6 +33,7 @@ struct Cloth::Internals {
     return {c.settings_.tethers ? c.anchor_.data() : nullptr, c.tether_.data()};
   }
   static bool damped(const Cloth& c) { return c.damped_; }
+  static float* quads(Cloth& c) { return c.isGrid() ? nullptr : c.quads_.data(); }
   static double rate2(const Cloth& c) { return c.rate2_; }
   static double dampRate(const Cloth& c) { return c.dampRate_; }
   static void refit(Cloth& c) { c.refit(); }

@@ -87,8 +87,8 @@ std::size_t stepCloth(Cloth& cloth, const Obstacles& obstacles,
     const auto& kernel = plainLoopsActive() ? simd::stepClothAutovec : simd::stepCloth;
     // A small cloth's passes are shorter than the threads' start and barriers.
     const int t = v.slots < 8192 ? 1 : threads > 0 ? threads : omp_get_max_threads();
-    kernel({v, net, cloth.isGrid() ? &grid : nullptr, tethers, rows.data(), rows.size(), q, params,
-            t});
+    kernel({v, net, cloth.isGrid() ? &grid : nullptr, tethers, rows.data(), rows.size(), q,
+            Internals::quads(cloth), params, t});
   }
   for (std::size_t f = 0; f < 6; ++f)
     for (std::size_t i = 0; i < v.slots; ++i)
