@@ -5,12 +5,16 @@
 //  - a distance joint holds two particles at the distance they are built at: a rigid rod with
 //    kRigid (XPBD only), a Hooke spring with a stiffness (N/m);
 //  - a ball joint holds two particles together (rest length 0): two particle bodies, each made
-//    rigid by its own springs, that share the pivot turn freely about it;
+//    rigid by its own springs, that share the pivot turn freely about it (a soft ball joint, of
+//    a stiffness, lets the pivots part by force / stiffness);
 //  - a hinge is two ball joints: two bodies joined at two pivots turn only about the axis through
 //    them (the book's hinge from distance joints);
 //  - a chain is a line of particles, each joined to the next;
 //  - the jelly cube is the appendix's soft body: 8 corner particles with a spring between every
 //    pair (28: 12 edges, 12 face diagonals, 4 body diagonals), a rigid box with kRigid.
+// A Cloth's tethers (ClothSettings::tethers, on by default) keep each particle within its rest
+// distance along the springs from the nearest pin, so they stop a soft joint on such a path from
+// stretching: turn them off for soft joints that hang from pins.
 // Rest lengths are the distances between the particles' positions when the spring is added
 // (taken in double, rounded once). Every method checks its input and throws Error naming the call
 // and the value, leaving the builder unchanged.
@@ -40,13 +44,15 @@ class SpringBodyBuilder {
   // The book's distance joint: the same spring, rigid with kRigid, soft with a stiffness.
   std::uint32_t distanceJoint(std::uint32_t a, std::uint32_t b, float stiffness = kRigid,
                               float damping = 0.0f);
-  // A ball joint: a rigid spring of rest length 0 that holds a and b together (particles built
-  // apart are pulled together by the first step). Its index in springs().
-  std::uint32_t ballJoint(std::uint32_t a, std::uint32_t b);
+  // A ball joint: a spring of rest length 0 that holds a and b together (particles built apart
+  // are pulled together by the first steps), rigid with kRigid. Its index in springs().
+  std::uint32_t ballJoint(std::uint32_t a, std::uint32_t b, float stiffness = kRigid,
+                          float damping = 0.0f);
   // A hinge: ball joints a0-b0 and a1-b1 (a0 and a1 on one body, b0 and b1 on the other, the
   // pivots apart), so the bodies turn only about the axis through the pivots. The first joint's
   // index; the second's follows it.
-  std::uint32_t hinge(std::uint32_t a0, std::uint32_t b0, std::uint32_t a1, std::uint32_t b1);
+  std::uint32_t hinge(std::uint32_t a0, std::uint32_t b0, std::uint32_t a1, std::uint32_t b1,
+                      float stiffness = kRigid, float damping = 0.0f);
 
   // A chain of links >= 1 equal links from start to end: links + 1 particles evenly spaced, each
   // of inverse mass invMassPerParticle, joined in order by springs of the given stiffness and

@@ -84,22 +84,26 @@ std::uint32_t SpringBodyBuilder::distanceJoint(std::uint32_t a, std::uint32_t b,
                     "SpringBodyBuilder::distanceJoint");
 }
 
-std::uint32_t SpringBodyBuilder::ballJoint(std::uint32_t a, std::uint32_t b) {
-  requireEnds(a, b, size(), "SpringBodyBuilder::ballJoint");
-  springs_.push_back({a, b, 0.0f, kRigid, 0.0f});
+std::uint32_t SpringBodyBuilder::ballJoint(std::uint32_t a, std::uint32_t b, float stiffness,
+                                           float damping) {
+  constexpr const char* where = "SpringBodyBuilder::ballJoint";
+  requireEnds(a, b, size(), where);
+  requireSpringValues(stiffness, damping, where);
+  springs_.push_back({a, b, 0.0f, stiffness, damping});
   return std::uint32_t(springs_.size() - 1);
 }
 
 std::uint32_t SpringBodyBuilder::hinge(std::uint32_t a0, std::uint32_t b0, std::uint32_t a1,
-                                       std::uint32_t b1) {
+                                       std::uint32_t b1, float stiffness, float damping) {
   constexpr const char* where = "SpringBodyBuilder::hinge";
   requireEnds(a0, b0, size(), where, "a0", "b0");
   requireEnds(a1, b1, size(), where, "a1", "b1");
   // One pivot is a ball joint, not a hinge: each body needs two.
   require(a1 != a0, a1, where, "a1", "is a0: a hinge needs two pivots on each body");
   require(b1 != b0, b1, where, "b1", "is b0: a hinge needs two pivots on each body");
-  const std::uint32_t first = ballJoint(a0, b0);
-  ballJoint(a1, b1);
+  requireSpringValues(stiffness, damping, where);
+  const std::uint32_t first = ballJoint(a0, b0, stiffness, damping);
+  ballJoint(a1, b1, stiffness, damping);
   return first;
 }
 
