@@ -1,7 +1,7 @@
-// Joints and spring bodies (spring_bodies.hpp) by what they build and how it moves: the jelly
-// cube's springs and its breathing against the closed form, a cube at rest on a plane, a rigid
-// cube thrown spinning, ball joints and hinges, a chain, a soft distance joint as a spring, and
-// bad input. The springs' own physics and kernels are cloth_test and cloth_kernel_test.
+// Joints and spring bodies (spring_bodies.hpp) by what they build and how it moves: the
+// jelly cube's springs and its breathing against the closed form, a cube at rest on a plane, a
+// rigid cube thrown spinning, ball joints and hinges, a chain, a soft distance joint as a spring,
+// and bad input. The springs' own physics and kernels are cloth_test and cloth_kernel_test.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,14 +134,14 @@ double breathing(const Cloth& c) {
   return double((c.position(7) - c.position(0)).norm()) / (0.5 * std::sqrt(3.0)) - 1;
 }
 
-class Joints : public test::OnEveryPath {};
+class SpringBodyJoints : public test::OnEveryPath {};
 
 // Squeezed uniformly about its centre and released, the jelly cube breathes: it stays a scaled
 // cube (symmetry), every spring strained alike, and the radial forces on a corner sum to 8 k
 // times its radial displacement (edges sqrt3 k e a, face diagonals 2 sqrt3 k e a, the body
 // diagonal sqrt3 k e a, against a displacement sqrt3 e a / 2). So it is an oscillator of
 // stiffness 8 k and damping 8 c per corner: period 2 pi sqrt(m / 8 k), peaks decaying at 4 c / m.
-TEST_P(Joints, SoftJellyCubeBreathesAtTheClosedForm) {
+TEST_P(SpringBodyJoints, SoftJellyCubeBreathesAtTheClosedForm) {
   const float m = 0.125f, k = 10;
   const double omega = std::sqrt(8 * k / m);  // 25.3 rad/s
   for (const float c : {0.0f, 0.02f}) {
@@ -181,7 +181,7 @@ TEST_P(Joints, SoftJellyCubeBreathesAtTheClosedForm) {
 
 // A jelly cube dropped tilted onto the plane y = 0 tumbles onto a face and comes to rest there,
 // never below the plane's margin: stiff (XPBD, kRigid) and soft (mass-spring, damped).
-TEST_P(Joints, JellyCubeComesToRestOnAPlane) {
+TEST_P(SpringBodyJoints, JellyCubeComesToRestOnAPlane) {
   for (const ClothModel model : {ClothModel::kXpbd, ClothModel::kMassSpring}) {
     SCOPED_TRACE(toString(model));
     const bool soft = model == ClothModel::kMassSpring;
@@ -237,7 +237,7 @@ TEST_P(Joints, JellyCubeComesToRestOnAPlane) {
 
 // A rigid cube (kRigid, XPBD) thrown spinning in free fall keeps its shape, and its centre flies
 // as a free particle does: the springs are internal forces.
-TEST_P(Joints, RigidCubeThrownSpinningKeepsItsShape) {
+TEST_P(SpringBodyJoints, RigidCubeThrownSpinningKeepsItsShape) {
   SpringBodyBuilder b;
   b.jellyCube(Vec3f(0, 2, 0), 0.5f, 8, kRigid);
   ClothSettings s;
@@ -289,7 +289,7 @@ struct HungCube {
   const Cloth& cloth() const { return world.cloth(h); }
 };
 
-TEST_P(Joints, BallJointHoldsTheParticlesTogetherAndTurnsFreely) {
+TEST_P(SpringBodyJoints, BallJointHoldsTheParticlesTogetherAndTurnsFreely) {
   HungCube hung(false);
   const std::uint32_t corner = hung.cube;
   double apart = 0, stretch = 0, zMoved = 0;
@@ -313,7 +313,7 @@ TEST_P(Joints, BallJointHoldsTheParticlesTogetherAndTurnsFreely) {
 
 // A soft ball joint holds a hanging particle (1 kg) below its pin by its weight over the
 // stiffness, m g / k = 0.0982 m, once damped to rest, in either model.
-TEST_P(Joints, SoftBallJointSagsByWeightOverStiffness) {
+TEST_P(SpringBodyJoints, SoftBallJointSagsByWeightOverStiffness) {
   for (const ClothModel model : {ClothModel::kXpbd, ClothModel::kMassSpring}) {
     SCOPED_TRACE(toString(model));
     SpringBodyBuilder b;
@@ -336,7 +336,7 @@ TEST_P(Joints, SoftBallJointSagsByWeightOverStiffness) {
   }
 }
 
-TEST_P(Joints, HingeTurnsOnlyAboutItsAxis) {
+TEST_P(SpringBodyJoints, HingeTurnsOnlyAboutItsAxis) {
   HungCube hung(true);
   const std::vector<Vec3f> x0(hung.b.positions().begin(), hung.b.positions().end());
   // Distance to the hinge axis, the line x = 0, y = 1 along z.
@@ -363,7 +363,7 @@ TEST_P(Joints, HingeTurnsOnlyAboutItsAxis) {
   EXPECT_LT(zMoved, 2e-3);
 }
 
-TEST_P(Joints, ChainHangsAtItsLength) {
+TEST_P(SpringBodyJoints, ChainHangsAtItsLength) {
   // 20 rigid links of 0.1 m hung from a pin, released 0.1 rad off the vertical: it swings.
   SpringBodyBuilder b;
   const std::uint32_t first = b.chain(Vec3f(0, 3, 0), Vec3f(0.2f, 1, 0), 20, 1);
@@ -389,7 +389,7 @@ TEST_P(Joints, ChainHangsAtItsLength) {
 
 // A soft distance joint from a pin to a particle of mass 1 kg: a spring of k = 100 N/m, period
 // 2 pi sqrt(m / k) = 0.63 s, in either model.
-TEST_P(Joints, SoftDistanceJointIsASpring) {
+TEST_P(SpringBodyJoints, SoftDistanceJointIsASpring) {
   for (const ClothModel model : {ClothModel::kXpbd, ClothModel::kMassSpring}) {
     SCOPED_TRACE(toString(model));
     SpringBodyBuilder b;
@@ -413,7 +413,7 @@ TEST_P(Joints, SoftDistanceJointIsASpring) {
   }
 }
 
-SIMDPHYS_ON_EVERY_PATH(Joints);
+SIMDPHYS_ON_EVERY_PATH(SpringBodyJoints);
 
 TEST(SpringBodies, BadInputIsRefusedWithAClearErrorAndTheBuilderUnchanged) {
   SpringBodyBuilder b;
