@@ -257,10 +257,10 @@ TEST_P(SpringBodyJoints, RigidCubeThrownSpinningKeepsItsShape) {
   // takes out all but some 1e-6. Allowed: 1e-5, a quarter of what the pass has to remove.
   EXPECT_LT(worst, 1e-5);
   // The centre: x0 + v0 t + g h^2 n (n + 1) / 2 after n = 600 substeps of h = 1/600 s
-  // (semi-implicit Euler's free fall), to rounding: each substep's velocity (x' - x) / h carries
-  // x's rounding, 1.2e-7 m near 2 m, over h: 7e-5 m/s at random, which adds up over the n
-  // substeps to some 7e-5 h sqrt(n^3 / 3) = 1e-3 m at a particle, 3.5e-4 m at the mean of 8.
-  // 1e-3 allowed.
+  // (semi-implicit Euler's free fall), to rounding: each substep's change of velocity, what moved
+  // x off its prediction over h, carries x's rounding, 1.2e-7 m near 2 m, over h: 7e-5 m/s at
+  // random, which adds up over the n substeps to some 7e-5 h sqrt(n^3 / 3) = 1e-3 m at a
+  // particle, 3.5e-4 m at the mean of 8. 1e-3 allowed.
   const Vec3f expected = Vec3f(0, 2, 0) + v0 + 0.5f * (601.0f / 600) * s.gravity;
   EXPECT_LT((centroid(world.cloth(h).positions(), 0, 8) - expected).norm(), 1e-3f);
 }
