@@ -16,4 +16,5 @@
 #include "simdphys/pair_finder.hpp"
 #include "simdphys/particles.hpp"
 #include "simdphys/scene.hpp"  // every header of scene/
+#include "simdphys/spring_bodies.hpp"
 #include "simdphys/world.hpp"
