@@ -448,7 +448,7 @@ struct QuadEnds : IndexedEnds<D> {
   }
   template <class M>
   void store(const std::uint32_t* idx, M m, const Vec3L<V>& x, V w) const {
-    alignas(64) float lanes[4 * Base::kMax];
+    alignas(64) float lanes[4 * Base::kMax] = {};
     hn::StoreInterleaved4(x[0], x[1], x[2], w, this->d, lanes);
     constexpr std::size_t kL = hn::MaxLanes(D());
     if (hn::AllTrue(this->d, m)) {  // the common case, unrolled
@@ -530,7 +530,10 @@ void networkBatch(D d, const core::ClothView<float>& v, const core::SpringNetwor
       s.gamma1 = c.one + s.gamma;
       s.stiffness = LoadU(d, net.stiffness + k);
       s.damping = LoadU(d, net.damping + k);
-#if HWY_TARGET != HWY_SCALAR
+#if HWY_TARGET == HWY_SCALAR
+      (void)quads;
+#else
+      if constexpr (!kShuffles<D>) (void)quads;
       if constexpr (kShuffles<D>)
         if (quads) {
           solvePairs<kXpbd, kDamped>(d, QuadEnds<D>(indexed, quads), s, FirstN(d, n), c);
