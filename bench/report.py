@@ -539,7 +539,7 @@ def cloth_plot(runs, tasks, title, filename):
         ax.set_xlabel("ms a frame, one thread (lower is faster)", fontsize=9)
         ax.set_ylabel("mean structural stretch at the end (lower holds better)", fontsize=9)
         ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=8, loc="lower left")
     fig.suptitle(title, x=0.02, ha="left", fontsize=11)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     fig.savefig(filename, dpi=100)
