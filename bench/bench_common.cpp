@@ -91,4 +91,15 @@ bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expe
   return found == expected;
 }
 
+void clothCounters(benchmark::State& state, const workloads::ClothWorkload& w,
+                   std::span<const Vec3f> x, double deepest, bool finite) {
+  const workloads::ClothStretch s = workloads::clothStretch(w, x);
+  state.counters["stretch_mean"] = s.mean;
+  state.counters["stretch_p99"] = s.p99;
+  state.counters["stretch_max"] = s.max;
+  state.counters["stretch_max_away_from_pins"] = s.maxAwayFromPins;
+  state.counters["penetration"] = deepest;
+  state.counters["finite"] = finite ? 1 : 0;
+}
+
 }  // namespace simdphys::bench

@@ -14,6 +14,7 @@
 #include <functional>
 #include <string>
 
+#include "cloth.hpp"
 #include "simdphys/core.hpp"
 #include "simdphys/geometry3d/streams.hpp"
 #include "workloads.hpp"
@@ -40,6 +41,11 @@ void registerBestPath(const std::string& task, const std::string& method, std::s
 // "scalar" for code that has one path only (the octree's build). `iterations` as above.
 void registerOnce(const std::string& task, const std::string& method, const std::string& label,
                   std::size_t n, const Body& body, std::int64_t iterations = 0);
+
+// W3's measures of a cloth at the end (workloads/cloth.hpp) as the run's counters, with the
+// deepest penetration over every frame and whether every position stayed finite.
+void clothCounters(benchmark::State& state, const workloads::ClothWorkload& w,
+                   std::span<const Vec3f> x, double deepest, bool finite);
 
 // Marks the run as failed if `found` differs from `expected`, else records both.
 bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expected);

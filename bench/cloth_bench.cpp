@@ -105,18 +105,12 @@ void clothRun(benchmark::State& state, const Model& m, std::size_t n, bool plain
     state.ResumeTiming();
   }
   const std::vector<Vec3f> x = world.cloth(h).positions();
-  const workloads::ClothStretch s = workloads::clothStretch(w, x);
   const auto frames = double(state.iterations());
   state.counters["frames"] = frames;
   state.counters["substeps"] = updates / frames / double(world.cloth(h).springs().size());
   state.counters["ms_per_frame"] = seconds * 1e3 / frames;
   state.counters["spring_updates_per_second"] = updates / seconds;
-  state.counters["stretch_mean"] = s.mean;
-  state.counters["stretch_p99"] = s.p99;
-  state.counters["stretch_max"] = s.max;
-  state.counters["stretch_max_away_from_pins"] = s.maxAwayFromPins;
-  state.counters["penetration"] = deepest;
-  state.counters["finite"] = finite ? 1 : 0;
+  clothCounters(state, w, x, deepest, finite);
   state.SetItemsProcessed(std::int64_t(updates));
   if (state.iterations() != workloads::kClothFrames) {
     state.SkipWithError("W3 runs 300 frames: its checks need the final state");

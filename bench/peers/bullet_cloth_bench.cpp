@@ -137,19 +137,13 @@ void clothRun(benchmark::State& state, std::size_t n, int positionIterations) {
       explodedAt = stepped;
     state.ResumeTiming();
   }
-  const workloads::ClothStretch s = workloads::clothStretch(w, x);
   const double iterations = cloth.positionIterations();
   state.counters["frames"] = stepped;
   state.counters["position_iterations"] = iterations;
   state.counters["ms_per_frame"] = seconds * 1e3 / stepped;
   state.counters["spring_updates_per_second"] =
       double(w.springs.size()) * iterations * stepped / seconds;
-  state.counters["stretch_mean"] = s.mean;
-  state.counters["stretch_p99"] = s.p99;
-  state.counters["stretch_max"] = s.max;
-  state.counters["stretch_max_away_from_pins"] = s.maxAwayFromPins;
-  state.counters["penetration"] = deepest;
-  state.counters["finite"] = finite ? 1 : 0;
+  clothCounters(state, w, x, deepest, finite);
   state.counters["exploded"] = explodedAt >= 0 ? 1 : 0;
   state.counters["exploded_frame"] = explodedAt;
   state.SetItemsProcessed(std::int64_t(w.springs.size()) * std::int64_t(iterations) * stepped);
