@@ -107,17 +107,17 @@ constexpr int kSteps = 12;  // 0.2 s: the sheet falls onto the obstacles and sli
 class ClothKernel : public test::OnEveryPath {};
 
 TEST_P(ClothKernel, GridAndNetworkMatchTheReferenceBitForBit) {
-  for (const Case& c : kCases)
-    for (const auto& [nx, nz] : {std::pair<std::size_t, std::size_t>{21, 13}, {16, 9}}) {
-      SCOPED_TRACE(std::string(c.name) + " " + std::to_string(nx) + " x " + std::to_string(nz));
-      State want;
-      {
-        const ScopedPath reference("reference");
-        want = run(networkCloth(c, nx, nz), kSteps);
-      }
-      EXPECT_EQ(run(gridCloth(c, nx, nz), kSteps).bits, want.bits) << "grid";
-      EXPECT_EQ(run(networkCloth(c, nx, nz), kSteps).bits, want.bits) << "network";
+  // 21 x 13: rows padded to 32 slots, each colour's runs ending mid-vector at every width.
+  for (const Case& c : kCases) {
+    SCOPED_TRACE(c.name);
+    State want;
+    {
+      const ScopedPath reference("reference");
+      want = run(networkCloth(c, 21, 13), kSteps);
     }
+    EXPECT_EQ(run(gridCloth(c, 21, 13), kSteps).bits, want.bits) << "grid";
+    EXPECT_EQ(run(networkCloth(c, 21, 13), kSteps).bits, want.bits) << "network";
+  }
 }
 
 TEST_P(ClothKernel, PlainLoopMatchesTheReferenceBitForBit) {
