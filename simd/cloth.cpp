@@ -5,6 +5,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

@@ -6,6 +6,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

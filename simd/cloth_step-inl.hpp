@@ -64,6 +64,7 @@ struct ClothLanes {
   using V = LaneOf<D>;
   V h, invH, invH2, keep, margin, friction, zero, one;
   Vec3L<V> g;
+  bool shared = false;  // the passes' parts are shared among threads
   ClothLanes(D d, const core::ClothStepParams& p)
       : h(Set(d, p.h)),
         invH(Set(d, p.invH)),
@@ -310,6 +311,9 @@ HWY_INLINE std::uint64_t maskBits(D d, M m) {
   for (int k = 0; k < 8; ++k) bits |= std::uint64_t(bytes[k]) << (8 * k);
   return bits;
 }
+
+// Whether storeWhere writes the lanes of its mask only (AVX-512's masked stores).
+constexpr bool kMaskedStores = HWY_TARGET <= HWY_AVX3;
 
 // Writes the lanes of m only (storeWhere may write the others back unchanged).
 inline void storeOnly(ScalarLane, bool m, float v, float* p) { storeWhere(ScalarLane(), m, v, p); }
@@ -638,14 +642,17 @@ void gridFamily(D d, const core::ClothView<float>& v, const core::SpringGrid& g,
     } else {
       // This colour's rows: j with (j / span) % 2 == colour, a row a part. A shear family's run
       // spills one lane into a row beyond the pair (the next row of the colour, or the row's own
-      // end): that vector writes no lane it does not change.
+      // end): with threads, that vector writes no lane it does not change (a write-back of an
+      // unchanged lane could undo another thread's update; alone, it rewrites what it read).
       const std::size_t rows = (g.rows + 2 * span - 1 - colour * span) / (2 * span) * span;
       forParts(0, rows, 1, [&](std::size_t k, std::size_t) {
         const std::size_t j = k / span * 2 * span + colour * span + k % span;
         if (j >= g.rows) return;
         const std::size_t row = j * g.stride, rowEnd = row + g.stride;
         for (std::size_t i = row; i < rowEnd; i += L)
-          run(i, L, (f == G::kShear && i + L >= rowEnd) || (f == G::kShearBack && i == row));
+          run(i, L,
+              !kMaskedStores && c.shared &&
+                  ((f == G::kShear && i + L >= rowEnd) || (f == G::kShearBack && i == row)));
       });
     }
   }
@@ -684,7 +691,8 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
               std::size_t nRows, const core::ObstacleQueries* queries, float* quads,
               const core::ClothStepParams& p) {
   using S = core::ClothStreams;
-  const ClothLanes<D> c(d, p);
+  ClothLanes<D> c(d, p);
+  c.shared = omp_get_num_threads() > 1;
   for (int sub = 0; sub < p.substeps; ++sub) {
     if constexpr (!kXpbd) {
       forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
