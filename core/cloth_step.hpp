@@ -63,8 +63,9 @@ struct ClothStepParams {
   float h, invH, invH2;  // h, 1 / h, 1 / (h h)
   float keep;            // 1 - damping h: the velocity kept per substep
   float gravity[3];
-  float margin, friction;
-  bool damped;  // some spring has damping != 0
+  float margin, friction;  // margin: kept off surfaces by the path test (0 with penalty springs)
+  float penalty, zone;     // penalty springs: N/m (0: none) within `zone` of a surface
+  bool damped;             // some spring has damping != 0
 };
 
 }  // namespace simdphys::core

@@ -62,7 +62,7 @@ constexpr std::size_t kPart = 2048;  // slots of a part: a multiple of every lan
 template <class D>
 struct ClothLanes {
   using V = LaneOf<D>;
-  V h, invH, invH2, keep, margin, friction, zero, one;
+  V h, invH, invH2, keep, margin, friction, zero, one, penalty, zone;
   Vec3L<V> g;
   bool shared = false;  // the passes' parts are shared among threads
   ClothLanes(D d, const core::ClothStepParams& p)
@@ -74,6 +74,8 @@ struct ClothLanes {
         friction(Set(d, p.friction)),
         zero(Zero(d)),
         one(Set(d, 1.0f)),
+        penalty(Set(d, p.penalty)),
+        zone(Set(d, p.zone)),
         g(splat3(d, p.gravity)) {}
 };
 
@@ -269,6 +271,60 @@ HWY_INLINE void collide(D d, const core::ObstacleRow& row, std::uint32_t index,
     default:
       return;
   }
+}
+
+// Penalty springs (the reference's penaltyForce): forces along the normals of the planes,
+// spheres and boxes a particle lies within the zone of.
+template <class D>
+void penaltyForces(D d, const core::ClothView<float>& v, const core::ObstacleRow* rows,
+                   std::size_t nRows, const ClothLanes<D>& c) {
+  using S = core::ClothStreams;
+  using V = LaneOf<D>;
+  forParts(0, v.slots, kPart, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; i += Lanes(d)) {
+      const auto live = Gt(LoadU(d, v.s[S::w] + i), c.zero);
+      if (AllFalse(d, live)) continue;
+      const Vec3L<V> x = load3(d, v.s, S::x, i);
+      Vec3L<V> f = load3(d, v.s, S::fx, i);
+      for (std::size_t r = 0; r < nRows; ++r) {
+        const core::ObstacleRow& row = rows[r];
+        const auto at = [&](int k) { return splat3(d, row.v + k); };
+        Vec3L<V> n;
+        V depth;
+        auto hit = live;
+        if (row.kind == core::ObstacleRow::kPlane) {
+          n = at(0);
+          depth = c.zone - (dot(n, x) + Set(d, row.v[3]));
+        } else if (row.kind == core::ObstacleRow::kSphere) {
+          const Vec3L<V> e = x - at(0);
+          const V l = Sqrt(dot(e, e));
+          depth = (Set(d, row.v[3]) + c.zone) - l;
+          hit = And(hit, Gt(l, c.zero));
+          n = e / l;
+        } else if (row.kind == core::ObstacleRow::kObb) {
+          const Vec3L<V> centre = at(0), axes[3] = {at(6), at(9), at(12)};
+          V least = Set(d, std::numeric_limits<float>::infinity()), q = c.zero;
+          n = axes[0];
+          for (int k = 0; k < 3; ++k) {
+            const V qk = dot(axes[k], x - centre);
+            const V pen = (Set(d, row.v[3 + k]) + c.zone) - Abs(qk);
+            const auto less = Lt(pen, least);
+            least = IfThenElse(less, pen, least), q = IfThenElse(less, qk, q);
+            n = IfThenElse(less, axes[k], n);
+          }
+          n = n * IfThenElse(Lt(q, c.zero), Set(d, -1.0f), c.one);
+          depth = least;
+        } else {
+          continue;  // meshes: the path test only
+        }
+        hit = And(hit, Gt(depth, c.zero));
+        if (AllFalse(d, hit)) continue;
+        const Vec3L<V> zero3{{c.zero, c.zero, c.zero}};
+        f = f + IfThenElse(hit, n * (c.penalty * depth), zero3);
+      }
+      store3(d, live, f, v.s, S::fx, i);
+    }
+  });
 }
 
 // Tethers, obstacles and the velocity changed by what moved the particle off its prediction.
@@ -700,6 +756,7 @@ void substeps(D d, const core::ClothView<float>& v, const core::SpringNetwork& n
           std::fill(v.s[S::fx + k] + begin, v.s[S::fx + k] + end, 0.0f);
       });
       springs<kXpbd, kDamped>(d, v, net, grid, quads, c, p);
+      if (p.penalty > 0) penaltyForces(d, v, rows, nRows, c);
     }
     predict<kXpbd>(d, v, c);
     if constexpr (kXpbd) springs<kXpbd, kDamped>(d, v, net, grid, quads, c, p);

@@ -56,12 +56,14 @@ struct Case {
   ClothModel model;
   SpringKindSettings kind;
   bool tethers;
+  float penalty = 0;  // N/m: penalty springs at the obstacles
 };
 const Case kCases[] = {
     {"xpbd rigid", ClothModel::kXpbd, {kRigid, 0}, true},
     {"xpbd soft damped", ClothModel::kXpbd, {5000, 20}, false},
     {"mass-spring", ClothModel::kMassSpring, {3000, 0}, true},
     {"mass-spring damped", ClothModel::kMassSpring, {3000, 5}, false},
+    {"mass-spring penalty springs", ClothModel::kMassSpring, {3000, 0}, true, 2000},
 };
 
 struct State {
@@ -87,7 +89,7 @@ State run(Cloth cloth, int steps, int threads = 0, int substeps = 4) {
 
 ClothSettings settingsOf(const Case& c) {
   ClothSettings s;
-  s.model = c.model, s.tethers = c.tethers, s.damping = 0.2f;
+  s.model = c.model, s.tethers = c.tethers, s.damping = 0.2f, s.penalty = c.penalty;
   return s;
 }
 

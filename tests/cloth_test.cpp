@@ -275,6 +275,25 @@ TEST(Cloth, AChainOf100LinksHangsAtItsLength) {
 
 SIMDPHYS_ON_EVERY_PATH(Cloths);
 
+TEST(Cloth, PenaltySpringsHoldAParticleAtTheClosedFormDepth) {
+  // A particle of mass 1 on the plane y = 0, held by a penalty spring k = 1e4 N/m within the
+  // margin 0.01: at rest k d = m g, so it sits d = 9.82e-4 below the margin, at y = 0.01 - d.
+  // Damped (5 /s) for 5 s, its motion decays by exp(-25): the rest height within 1e-6 (float
+  // positions near 0.01 round to 1e-9; the damping's residue is below 1e-7).
+  World world;
+  world.obstacles().add(Plane{Vec3f(0, 1, 0), 0});
+  ClothSettings s;
+  s.model = ClothModel::kMassSpring, s.penalty = 1e4f, s.damping = 5, s.tethers = false;
+  const Vec3f p[] = {{0, 0.02f, 0}};
+  const float w[] = {1};
+  const Handle h = world.addCloth(Cloth(p, w, {}, s));
+  for (int f = 0; f < 300; ++f) world.step();
+  EXPECT_NEAR(world.cloth(h).position(0).y(), 0.01 - 9.82e-4, 1e-6);
+  // Penalty springs are forces: XPBD refuses them.
+  s.model = ClothModel::kXpbd;
+  expectError([&] { Cloth(p, w, {}, s); }, "penalty is 10000, needs ClothModel::kMassSpring");
+}
+
 TEST(Cloth, MassSpringSubstepsItselfOrRefuses) {
   const workloads::ClothWorkload w = workloads::makeClothWorkload(8);
   ClothGrid g = workloads::clothGrid(w);

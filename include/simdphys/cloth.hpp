@@ -55,6 +55,11 @@ struct ClothSettings {
   float margin = 0.01f;   // m, in (0, 1]: the distance kept from obstacles' surfaces
   float friction = 0.3f;  // >= 0: Coulomb's coefficient against obstacles
   bool tethers = true;    // long-range attachments to the nearest pinned particle
+  // Penalty springs (the appendix's contacts as springs; mass-spring model only): N/m, >= 0. A
+  // particle within `margin` of a plane, sphere or box is pushed out by penalty * depth along
+  // the surface's normal, and kept out of the true surface by the path test. 0: off, contacts
+  // hold the particle `margin` off the surface.
+  float penalty = 0.0f;
   static constexpr int kMaxSubsteps = 1000;
 };
 
@@ -159,7 +164,7 @@ class Cloth {
   AlignedVector<float> quads_;  // the network kernel's scratch: (x, y, z, w) a slot
   // The explicit model's stability bound (src/cloth/step.cpp): Gershgorin bounds of the largest
   // squared frequency and damping rate, infinite with a rigid spring.
-  double rate2_ = 0, dampRate_ = 0;
+  double rate2_ = 0, dampRate_ = 0, maxInvMass_ = 0;
   bool damped_ = false;  // some spring has damping
   Aabb bounds_;
 };

@@ -37,6 +37,10 @@ void validate(const ClothSettings& s, const std::string& where) {
   require(s.margin > 0 && s.margin <= 1, s.margin, where, "margin", "must be in (0, 1] m");
   require(s.friction >= 0 && std::isfinite(s.friction), s.friction, where, "friction",
           "must be finite and >= 0");
+  require(s.penalty >= 0 && std::isfinite(s.penalty), s.penalty, where, "penalty",
+          "must be finite and >= 0");
+  require(s.penalty == 0 || s.model == ClothModel::kMassSpring, s.penalty, where, "penalty",
+          "needs ClothModel::kMassSpring (penalty springs are forces)");
 }
 
 namespace {
@@ -229,6 +233,7 @@ void Cloth::build(std::span<const Vec3f> positions, std::span<const float> invMa
       rate2[p] += 2 * w * double(s.stiffness), damp[p] += 2 * w * double(s.damping);
   }
   rate2_ = dampRate_ = 0;
+  maxInvMass_ = invMass.empty() ? 0.0 : double(*std::max_element(invMass.begin(), invMass.end()));
   damped_ =
       std::any_of(springs_.begin(), springs_.end(), [](const Spring& s) { return s.damping != 0; });
   for (std::size_t i = 0; i < count_; ++i)

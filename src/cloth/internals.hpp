@@ -35,6 +35,7 @@ struct Cloth::Internals {
   static bool damped(const Cloth& c) { return c.damped_; }
   static float* quads(Cloth& c) { return c.isGrid() ? nullptr : c.quads_.data(); }
   static double rate2(const Cloth& c) { return c.rate2_; }
+  static double maxInvMass(const Cloth& c) { return c.maxInvMass_; }
   static double dampRate(const Cloth& c) { return c.dampRate_; }
   static void refit(Cloth& c) { c.refit(); }
   static std::size_t slotOf(const Cloth& c, std::uint32_t particle) {

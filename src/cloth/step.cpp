@@ -34,7 +34,8 @@ int clothSubsteps(const Cloth& cloth, float dt, const std::string& where) {
   if (s.model != ClothModel::kMassSpring) return s.substeps;
   // Semi-implicit Euler on x'' = -w2 x - g x' is stable for h^2 w2 + 2 h g <= 4; the bound
   // asked here keeps a fifth of that in hand, with Gershgorin bounds for w2 and g.
-  const double w2 = Internals::rate2(cloth), g = Internals::dampRate(cloth);
+  const double w2 = Internals::rate2(cloth) + Internals::maxInvMass(cloth) * double(s.penalty),
+               g = Internals::dampRate(cloth);
   if (std::isinf(w2))
     throw Error(where +
                 ": the mass-spring model cannot step a rigid spring (stiffness kRigid); "
@@ -62,7 +63,8 @@ core::ClothStepParams clothParams(const Cloth& cloth, float dt, int substeps) {
   p.invH2 = 1.0f / (p.h * p.h);
   p.keep = std::max(0.0f, 1.0f - s.damping * p.h);
   for (int k = 0; k < 3; ++k) p.gravity[k] = s.gravity[k];
-  p.margin = s.margin, p.friction = s.friction;
+  p.margin = s.penalty > 0 ? 0.0f : s.margin, p.friction = s.friction;
+  p.penalty = s.penalty, p.zone = s.margin;
   p.damped = Internals::damped(cloth);
   return p;
 }

@@ -64,6 +64,38 @@ void springForce(const ClothState<T>& s, std::uint32_t a, std::uint32_t b, T res
   s.store(S::fx, b, s.load(S::fx, b) + (-d) * k);
 }
 
+// A penalty spring (the appendix's contact as a spring): the force penalty * depth along the
+// normal of a plane, sphere or box (its nearest face) that x lies within `zone` of; else zero.
+template <class T>
+Vec3<T> penaltyForce(const core::ObstacleRow& row, const Vec3<T>& x, T zone, T penalty) {
+  const auto at = [&](int k) { return Vec3<T>(T(row.v[k]), T(row.v[k + 1]), T(row.v[k + 2])); };
+  switch (row.kind) {
+    case core::ObstacleRow::kPlane: {
+      const Vec3<T> n = at(0);
+      const T depth = zone - (n.dot(x) + T(row.v[3]));
+      return depth > 0 ? Vec3<T>(n * (penalty * depth)) : Vec3<T>::Zero();
+    }
+    case core::ObstacleRow::kSphere: {
+      const Vec3<T> e = x - at(0);
+      const T l = std::sqrt(e.dot(e)), depth = (T(row.v[3]) + zone) - l;
+      return depth > 0 && l > 0 ? Vec3<T>((e / l) * (penalty * depth)) : Vec3<T>::Zero();
+    }
+    case core::ObstacleRow::kObb: {
+      const Vec3<T> c = at(0), axes[3] = {at(6), at(9), at(12)};
+      T least = std::numeric_limits<T>::infinity(), q = 0;
+      int face = 0;
+      for (int k = 0; k < 3; ++k) {
+        const T qk = axes[k].dot(x - c), pen = (T(row.v[3 + k]) + zone) - std::abs(qk);
+        if (pen < least) least = pen, face = k, q = qk;
+      }
+      const Vec3<T> n = axes[face] * (q < 0 ? T(-1) : T(1));
+      return least > 0 ? Vec3<T>(n * (penalty * least)) : Vec3<T>::Zero();
+    }
+    default:
+      return Vec3<T>::Zero();  // meshes: the path test only
+  }
+}
+
 // The path p -> x of a free particle against one obstacle row: moved out to `margin` from the
 // surface, then its tangential motion limited by friction (position-based Coulomb: held when it
 // is below friction times the push, else shortened by that much).
@@ -169,6 +201,15 @@ void stepCloth(const core::ClothView<T>& v, const core::SpringNetwork& net,
       for (std::size_t k = 0; k < net.batchBegin[net.batches]; ++k)
         springForce<T>(s, net.a[k], net.b[k], T(net.rest[k]), T(net.stiffness[k]),
                        T(net.damping[k]));
+      if (p.penalty > 0)
+        for (std::size_t i = 0; i < v.slots; ++i) {
+          if (v.s[S::w][i] == 0) continue;
+          const Vec3<T> x = s.load(S::x, i);
+          Vec3<T> f = s.load(S::fx, i);
+          for (const core::ObstacleRow& row : rows)
+            f = f + penaltyForce<T>(row, x, T(p.zone), T(p.penalty));
+          s.store(S::fx, i, f);
+        }
     }
     for (std::size_t i = 0; i < v.slots; ++i) {
       const T w = v.s[S::w][i];
