@@ -35,7 +35,7 @@ struct SpringNetwork {
 // A grid's springs: family f joins slot p to p + offset(f) where rest[f][p] >= 0 (-1 elsewhere).
 // Families in solving order: x+1, z+1, shear (x+1, z+1), shear (x-1, z+1), bend x+2, bend z+2,
 // of kinds structural, structural, shear, shear, bend, bend; each solved as two colours (see
-// simd/cloth_grid-inl.hpp), in the order of the network's batches of Cloth::grid.
+// simd/cloth_step-inl.hpp), in the order of the network's batches of Cloth::grid.
 struct SpringGrid {
   enum Family : std::uint32_t { kX, kZ, kShear, kShearBack, kBendX, kBendZ, kFamilies };
   static constexpr std::uint32_t kKind[kFamilies] = {0, 0, 1, 1, 2, 2};

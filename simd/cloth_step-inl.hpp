@@ -431,9 +431,6 @@ struct IndexedEnds {
   float* const* s;
   const std::uint32_t *ia, *ib;
   std::size_t n;
-  static V gather(D d, const float* field, const std::uint32_t* idx, std::size_t n) {
-    return gatherLanes(d, field, idx, n);
-  }
   template <class M>
   static void scatter(D d, M m, V v, float* field, const std::uint32_t* idx, std::size_t n) {
     alignas(64) float lanes[kMax] = {};
@@ -442,8 +439,8 @@ struct IndexedEnds {
     for (std::size_t l = 0; l < n; ++l)
       if (bits >> l & 1) field[idx[l]] = lanes[l];
   }
-  V a(std::size_t f) const { return gather(d, s[f], ia, n); }
-  V b(std::size_t f) const { return gather(d, s[f], ib, n); }
+  V a(std::size_t f) const { return gatherLanes(d, s[f], ia, n); }
+  V b(std::size_t f) const { return gatherLanes(d, s[f], ib, n); }
   Vec3L<V> a3(std::size_t f) const { return {{a(f), a(f + 1), a(f + 2)}}; }
   Vec3L<V> b3(std::size_t f) const { return {{b(f), b(f + 1), b(f + 2)}}; }
   template <class M>
