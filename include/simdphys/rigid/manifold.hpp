@@ -1,0 +1,70 @@
+// Contact manifolds (book chapter 15, the appendix's arbiters): where two convex shapes touch or
+// are about to, as the rigid-body solver (rigid.hpp) consumes them. A manifold has one normal and
+// at most four points; each point carries a feature id that names the pair of features (faces,
+// edges, vertices) it comes from, so the solver matches it with last frame's point and warm
+// starts it (Box2D's b2ManifoldPoint::id, Jolt's sub-shape ids).
+//
+// Speculative contacts: a collide() reports points whose separation is at most maxSeparation
+// (>= 0), not only penetrating ones, so the solver can stop bodies before they meet (Box2D v3's
+// speculative distance; Catto, "Speculative contacts", 2011).
+//
+// Conventions for a pair (A, B):
+//  - normal: unit, from A towards B; moving B along it separates them.
+//  - separation: signed distance between the surfaces along the normal at the point (< 0:
+//    penetrating by -separation).
+//  - point: midway between the two surfaces at the contact (A's surface point +
+//    separation / 2 * normal).
+// A box-box manifold is found by the separating axis test over the 15 axes (the face normals of
+// both boxes and the cross products of their edges) with the axis of least penetration chosen,
+// faces preferred over edges within a tolerance (so resting stacks do not flicker between axes);
+// face contacts clip the incident face against the reference face's side planes and keep at most
+// four points (the deepest, and those spanning the largest area); edge contacts give one point.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "simdphys/geometry3d/primitives.hpp"
+
+namespace simdphys {
+
+template <class T>
+struct ContactPointT {
+  Vec3<T> point = Vec3<T>::Zero();
+  T separation = 0;
+  std::uint32_t id = 0;  // feature pair; unique within a manifold
+};
+
+template <class T>
+struct ManifoldT {
+  static constexpr int kMaxPoints = 4;
+  Vec3<T> normal = Vec3<T>::UnitY();
+  int count = 0;
+  std::array<ContactPointT<T>, kMaxPoints> points{};
+};
+
+using ContactPoint = ContactPointT<float>;
+using Manifold = ManifoldT<float>;
+using Manifoldd = ManifoldT<double>;
+
+// The manifold of each pair of shapes the rigid bodies need (bodies are spheres and boxes; static
+// obstacles add planes). Compiled for float and double (src/reference/rigid/manifold.cpp).
+template <class T>
+ManifoldT<T> collide(const SphereT<T>& a, const SphereT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const SphereT<T>& a, const ObbT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const ObbT<T>& a, const ObbT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const SphereT<T>& a, const PlaneT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const ObbT<T>& a, const PlaneT<T>& b, T maxSeparation);
+
+// The same manifold seen from the other shape: the normal reversed, points and ids kept.
+template <class T>
+ManifoldT<T> flipped(ManifoldT<T> m) {
+  m.normal = -m.normal;
+  return m;
+}
+
+}  // namespace simdphys
