@@ -15,6 +15,8 @@
 #include "simdphys/obstacles.hpp"
 #include "simdphys/pair_finder.hpp"
 #include "simdphys/particles.hpp"
+#include "simdphys/rigid.hpp"
+#include "simdphys/rigid/manifold.hpp"
 #include "simdphys/scene.hpp"  // every header of scene/
 #include "simdphys/spring_bodies.hpp"
 #include "simdphys/world.hpp"

@@ -91,4 +91,17 @@ struct Particle {
   static constexpr float kPad[kCount] = {};
 };
 
+// Rigid bodies (rigid.hpp): position, orientation (quaternion x, y, z, w), linear and angular
+// velocity, inverse mass and the inverse inertia about the body's own axes, the shape (kind
+// 0 sphere, 1 box; ex, ey, ez the box's half extents, ex the sphere's radius), friction,
+// restitution, and the force and torque held on it. Padding: zeros, inverse mass 0, which no step
+// moves.
+struct Body {
+  enum : std::size_t {
+    x, y, z, qx, qy, qz, qw, vx, vy, vz, wx, wy, wz, invMass, invIx, invIy, invIz,
+    shape, ex, ey, ez, friction, restitution, fx, fy, fz, tx, ty, tz, kCount
+  };
+  static constexpr float kPad[kCount] = {};
+};
+
 }  // namespace simdphys::fields

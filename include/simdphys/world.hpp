@@ -1,5 +1,5 @@
-// The world: it owns the static obstacles (obstacles.hpp) and the particle systems
-// (particles.hpp) and cloths (cloth.hpp; rigid bodies to come), and steps them at a fixed rate
+// The world: it owns the static obstacles (obstacles.hpp), the particle systems
+// (particles.hpp), cloths (cloth.hpp) and rigid bodies (rigid.hpp), and steps them at a fixed rate
 // through a pipeline of stages. A stage whose streams are empty costs nothing: a world of particles
 // runs no broadphase, no narrowphase and no solver.
 //
@@ -16,6 +16,7 @@
 #include "simdphys/handle.hpp"
 #include "simdphys/obstacles.hpp"
 #include "simdphys/particles.hpp"
+#include "simdphys/rigid.hpp"
 
 namespace simdphys {
 
@@ -41,6 +42,7 @@ struct StageProfile {
 struct StepProfile {
   StageProfile particles;           // forces, integration and obstacle collision, fused in one pass
   StageProfile cloth;               // every cloth's substeps; elements: spring updates
+  StageProfile bodies;              // contacts and solver; elements: body steps
   double seconds = 0;               // the whole step
   std::uint64_t contacts = 0;       // surfaces met (bounces, slides, rests)
   std::uint64_t pushedOut = 0;      // particles found inside an obstacle and pushed out
@@ -74,6 +76,10 @@ class World {
   const Cloth& cloth(Handle cloth) const;
   std::size_t clothCount() const { return cloths_.size(); }
 
+  // The rigid bodies, with their own settings (rigid.hpp).
+  RigidBodies& bodies() { return bodies_; }
+  const RigidBodies& bodies() const { return bodies_; }
+
   // Advances the world by settings().timeStep. On an error nothing has moved.
   void step();
   const StepProfile& profile() const { return profile_; }
@@ -85,6 +91,7 @@ class World {
   HandleTable systemHandles_;
   std::vector<Cloth> cloths_;
   HandleTable clothHandles_;
+  RigidBodies bodies_;
   StepProfile profile_;
 };
 

@@ -7,6 +7,7 @@
 
 #include "src/cloth/step.hpp"
 #include "src/particles/step.hpp"
+#include "src/rigid/step.hpp"
 #include "src/reference/validate-inl.hpp"
 #include "src/world/obstacle_rows.hpp"
 
@@ -102,6 +103,14 @@ void World::step() {
             detail::stepCloth(cloths_[c], obstacles_, rows, dt, clothSubsteps[c], settings_.threads,
                               "World::step: cloth " + std::to_string(c));
     profile_.cloth.seconds = std::chrono::duration<double>(Clock::now() - clothStart).count();
+  }
+  if (bodies_.size() != 0) {
+    const auto bodiesStart = Clock::now();
+    for (int sub = 0; sub < settings_.substeps; ++sub) {
+      detail::stepBodies(bodies_, obstacles_, dt, "World::step");
+      profile_.bodies.elements += bodies_.size();
+    }
+    profile_.bodies.seconds = std::chrono::duration<double>(Clock::now() - bodiesStart).count();
   }
   profile_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
 }

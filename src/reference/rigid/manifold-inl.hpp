@@ -86,7 +86,9 @@ ManifoldT<T> collide(const ObbT<T>& a, const PlaneT<T>& b, T maxSeparation) {
     const T s = b.signedDistance(Vec3<T>(a.center + a.axes * local));
     if (s <= maxSeparation) near[std::size_t(n++)] = {s, v};
   }
-  std::sort(near.begin(), near.begin() + n);
+  for (int i = 1; i < n; ++i)  // insertion sort: at most eight
+    for (int j = i; j > 0 && near[std::size_t(j)] < near[std::size_t(j - 1)]; --j)
+      std::swap(near[std::size_t(j)], near[std::size_t(j - 1)]);
   for (int i = 0; i < std::min(n, ManifoldT<T>::kMaxPoints); ++i) {
     const std::uint32_t v = near[std::size_t(i)].second;
     const Vec3<T> local((v & 1) ? a.halfExtents.x() : -a.halfExtents.x(),

@@ -1,0 +1,156 @@
+// Rigid bodies (book chapter 15 and its appendix): spheres and boxes with mass and inertia in
+// structure-of-arrays streams, stepped by a World (world.hpp) against each other and against the
+// world's static obstacles (obstacles.hpp: planes, spheres, boxes).
+//
+// A step of dt, as Box2D v3 and Box3D solve it (Catto, "Solver2D", 2024): contacts are found once
+// (broadphase over the bodies' bounds grown by the speculative distance, then the manifolds of
+// rigid/manifold.hpp, matched with last step's by feature to warm start their impulses), then
+// each of `substeps` substeps of h integrates velocities (gravity, forces, damping, and the
+// gyroscopic term implicitly, so a free spinning box keeps its angular momentum), warm starts,
+// solves the contacts, integrates positions, and, for the soft step, relaxes; restitution is
+// applied once at the end. Contacts are solved with accumulated impulses clamped at zero, and
+// friction along two tangents clamped by the Coulomb cone's square (|f_i| <= mu * normal).
+//
+// Three contact models (ContactModel), each measured on W5 (docs/rigid.md):
+//  - kSoftStep: soft contacts (a spring of contactHertz and contactDampingRatio, push-out capped
+//    at maxPushSpeed) with a relax pass without the push-out (Box2D v3's default).
+//  - kBaumgarte: rigid contacts with a velocity bias of baumgarte / h times the penetration past
+//    linearSlop (the appendix's Baumgarte stabilisation with slop).
+//  - kProjection: rigid contacts without bias, then the book's linear projection: bodies moved
+//    apart along the normal by projection * (depth - slop), shared by inverse mass.
+// Speculative contacts (within speculativeDistance) are solved in every model: a body is stopped
+// at the surface it would reach within the substep instead of passing it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "simdphys/core.hpp"
+#include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/geometry3d/streams.hpp"
+#include "simdphys/handle.hpp"
+#include "simdphys/stream_fields.hpp"
+
+namespace simdphys {
+
+namespace detail {
+// A manifold's accumulated impulses kept from one step to the next for warm starting (the
+// appendix's arbiters), found by key (the pair's handle slots, which stay while bodies live)
+// and each point by its feature id.
+template <class T>
+struct CachedManifoldT {
+  std::uint64_t key;
+  int count;
+  std::uint32_t id[4];
+  T impulse[4][3];  // normal, tangent 1, tangent 2
+};
+}  // namespace detail
+
+enum class BodyShape : std::uint8_t { kSphere, kBox };
+enum class ContactModel : std::uint8_t { kSoftStep, kBaumgarte, kProjection };
+const char* toString(ContactModel model);
+
+// What a body is made of when it is added.
+struct BodyDef {
+  BodyShape shape = BodyShape::kBox;
+  Vec3f halfExtents{0.5f, 0.5f, 0.5f};  // a box's, m, each > 0
+  float radius = 0.5f;                   // a sphere's, m, > 0
+  Vec3f position = Vec3f::Zero();
+  Quatf orientation = Quatf::Identity();  // unit within 1e-3 (normalised on entry)
+  Vec3f velocity = Vec3f::Zero();         // m/s
+  Vec3f angularVelocity = Vec3f::Zero();  // rad/s, world frame
+  float mass = 1.0f;                      // kg, > 0; ignored by a kinematic body
+  // A kinematic body moves by its velocity alone: infinite mass, no gravity, pushed by nothing.
+  bool kinematic = false;
+  float friction = 0.6f;     // >= 0; a contact uses sqrt(fA fB) (Box2D's rule)
+  float restitution = 0.0f;  // in [0, 1]; a contact uses the larger of the two
+};
+
+struct RigidSettings {
+  ContactModel model = ContactModel::kSoftStep;
+  Vec3f gravity{0.0f, -9.82f, 0.0f};
+  int substeps = 4;    // per world step, in [1, 64]
+  int iterations = 1;  // contact passes a substep (and relax passes, soft step), in [1, 256]
+  // Soft step: the contact spring's frequency (Hz, capped at a quarter of the substep rate) and
+  // damping ratio, and the fastest speed it pushes bodies apart at (m/s); static contacts are
+  // twice as stiff (Box2D v3's numbers).
+  float contactHertz = 30.0f, contactDampingRatio = 10.0f, maxPushSpeed = 3.0f;
+  float baumgarte = 0.2f;    // kBaumgarte: the fraction of the penetration removed a step, (0, 1]
+  float projection = 0.45f;  // kProjection: the fraction moved apart a step (the book's), (0, 1]
+  float linearSlop = 0.005f;           // m: penetration left uncorrected, so contacts persist
+  float speculativeDistance = 0.02f;   // m: contacts are made this far before bodies touch
+  float restitutionThreshold = 1.0f;   // m/s: slower impacts do not bounce
+  float linearDamping = 0.0f, angularDamping = 0.0f;  // 1/s, >= 0
+  bool warmStarting = true;
+};
+
+// Throws Error naming `where` and the field if a setting is out of range or not finite.
+void validate(const RigidSettings& settings, const std::string& where);
+
+// The rigid bodies of a world: dense streams (fields::Body), each body named by the handle add()
+// returns for as long as it lives.
+class RigidBodies : public StreamSet<fields::Body> {
+ public:
+  explicit RigidBodies(const RigidSettings& settings = {});
+
+  const RigidSettings& settings() const { return settings_; }
+  void setSettings(const RigidSettings& settings);  // throws Error, changing nothing, if invalid
+
+  // Adds a body at index size(). Throws Error naming the body and the field if a value is not
+  // finite or out of range, a dynamic body's mass is not > 0, a size is not > 0, or the
+  // orientation is not a unit quaternion; nothing is added then.
+  Handle add(const BodyDef& def);
+  // Removes a body; the last one moves into its index. Throws Error if the handle is stale.
+  void remove(Handle body);
+  bool contains(Handle body) const { return handles_.contains(body); }
+  std::uint32_t index(Handle body) const;
+  Handle handle(std::uint32_t index) const { return handles_.handle(index); }
+
+  Vec3f position(Handle body) const;
+  Quatf orientation(Handle body) const;
+  Vec3f velocity(Handle body) const;
+  Vec3f angularVelocity(Handle body) const;
+  bool kinematic(Handle body) const;
+  // The body's shape where it is now.
+  Obb box(Handle body) const;        // throws Error if it is a sphere
+  Sphere sphere(Handle body) const;  // throws Error if it is a box
+  // Each throws Error naming the call and the body if the handle is stale or the value invalid,
+  // and changes nothing then.
+  void setPosition(Handle body, const Vec3f& position);
+  void setOrientation(Handle body, const Quatf& orientation);
+  void setVelocity(Handle body, const Vec3f& velocity);
+  void setAngularVelocity(Handle body, const Vec3f& angularVelocity);
+  // An impulse (N s) at a point of the world: changes the velocities now.
+  void applyImpulse(Handle body, const Vec3f& impulse, const Vec3f& point);
+  // Held on the body in every step from now on (N, N m); zero removes them.
+  void setForce(Handle body, const Vec3f& force);
+  void setTorque(Handle body, const Vec3f& torque);
+
+  // The streams (fields::Body), size() live elements each, read in place (no copy).
+  std::span<const float> stream(std::size_t f) const { return field(f).view(); }
+
+  // What the last step's contacts measured: the deepest penetration of any contact point when
+  // the contacts were found (m, >= 0), and the manifolds and points made.
+  float deepestPenetration() const { return deepest_; }
+  std::size_t manifoldCount() const { return manifolds_; }
+  std::size_t contactPointCount() const { return points_; }
+
+  struct Internals;  // src/rigid/: the step's access to the streams and the contact cache
+
+ private:
+  friend struct Internals;
+  std::uint32_t require(Handle body, const char* where) const;
+  Vec3f loadVec(std::size_t field, std::size_t i) const;
+  void storeVec(std::size_t field, std::size_t i, const Vec3f& v);
+
+  RigidSettings settings_;
+  HandleTable handles_;
+  std::vector<detail::CachedManifoldT<float>> cache_;
+  float deepest_ = 0;
+  std::size_t manifolds_ = 0, points_ = 0;
+};
+
+}  // namespace simdphys

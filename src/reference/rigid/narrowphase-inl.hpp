@@ -1,0 +1,162 @@
+// Finding a step's contacts (rigid.hpp): pairs of bodies whose bounds, grown by how far they may
+// get within the step, overlap (the broadphase of broadphase.hpp), bodies against the world's
+// obstacles, and the manifolds of each (rigid/manifold.hpp).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+#include <vector>
+
+#include "simdphys/broadphase.hpp"
+#include "simdphys/obstacles.hpp"
+#include "src/reference/rigid/bodies-inl.hpp"
+
+namespace simdphys::detail {
+
+inline constexpr std::uint32_t kObstacleBit = 0x80000000u;
+
+// The contact's key: the two bodies' handle slots, or a body's slot and an obstacle's index.
+inline std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t(a) << 32) | b;
+}
+
+template <class T>
+Vec3<T> reach(const BodyT<T>& b) {
+  if (b.shape == BodyShape::kSphere) return Vec3<T>::Constant(b.half.x());
+  return b.q.toRotationMatrix().cwiseAbs() * b.half;
+}
+
+// The manifold of body a against shape b (body or obstacle), normal from a to b.
+template <class T>
+ManifoldT<T> collideBody(const BodyT<T>& a, const BodyT<T>& b, T maxSeparation) {
+  if (a.shape == BodyShape::kSphere)
+    return b.shape == BodyShape::kSphere ? collide(a.sphere(), b.sphere(), maxSeparation)
+                                         : collide(a.sphere(), b.box(), maxSeparation);
+  return b.shape == BodyShape::kSphere ? flipped(collide(b.sphere(), a.box(), maxSeparation))
+                                       : collide(a.box(), b.box(), maxSeparation);
+}
+
+template <class T>
+ManifoldT<T> collideObstacle(const BodyT<T>& a, const ObstacleShape& shape, T maxSeparation) {
+  const auto against = [&](const auto& s) -> ManifoldT<T> {
+    if (a.shape == BodyShape::kSphere) return collide(a.sphere(), s, maxSeparation);
+    if constexpr (std::is_same_v<std::decay_t<decltype(s)>, SphereT<T>>)
+      return flipped(collide(s, a.box(), maxSeparation));
+    else
+      return collide(a.box(), s, maxSeparation);
+  };
+  if (const auto* p = std::get_if<Plane>(&shape)) return against(cast<T>(*p));
+  if (const auto* s = std::get_if<Sphere>(&shape)) return against(cast<T>(*s));
+  if (const auto* b = std::get_if<Aabb>(&shape)) {
+    const AabbT<T> box = cast<T>(*b);
+    return against(ObbT<T>{(box.min + box.max) / 2, (box.max - box.min) / 2, Mat3<T>::Identity()});
+  }
+  if (const auto* o = std::get_if<Obb>(&shape)) return against(cast<T>(*o));
+  return {};  // meshes: not yet met by bodies (docs/rigid.md)
+}
+
+// Bounds of an obstacle for the body test; planes are unbounded.
+inline bool mayTouch(const ObstacleShape& shape, const Aabb& body) {
+  if (std::holds_alternative<Plane>(shape)) return true;
+  Aabb box;
+  if (const auto* s = std::get_if<Sphere>(&shape))
+    box = {s->center.array() - s->radius, s->center.array() + s->radius};
+  else if (const auto* b = std::get_if<Aabb>(&shape))
+    box = *b;
+  else if (const auto* o = std::get_if<Obb>(&shape)) {
+    const Vec3f r = o->axes.cwiseAbs() * o->halfExtents;
+    box = {o->center - r, o->center + r};
+  } else
+    return false;
+  return (box.min.array() <= body.max.array()).all() && (body.min.array() <= box.max.array()).all();
+}
+
+// Appends the constraint of manifold m between bodies a and b (b = the static dummy for an
+// obstacle), its anchors from the points, its impulses zero.
+template <class T>
+void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& m,
+                   std::uint32_t a, std::uint32_t b, const Vec3<T>& centerA,
+                   const Vec3<T>& centerB, T friction, T restitution, bool isStatic,
+                   std::uint64_t key) {
+  if (m.count == 0) return;
+  ContactConstraintT<T> c;
+  c.a = a, c.b = b, c.key = key, c.normal = m.normal, c.friction = friction;
+  c.restitution = restitution, c.isStatic = isStatic, c.count = m.count;
+  tangentsOf(m.normal, c.tangent);
+  for (int i = 0; i < m.count; ++i) {
+    ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
+    p.rA = m.points[std::size_t(i)].point - centerA;
+    p.rB = m.points[std::size_t(i)].point - centerB;
+    p.baseSeparation = m.points[std::size_t(i)].separation;
+    p.id = m.points[std::size_t(i)].id;
+  }
+  out.push_back(c);
+}
+
+// The step's contacts, body pairs first (in the order of their keys) and obstacle contacts
+// after, so the solver meets the static contacts last (they stop push-through). `slots`: each
+// body's handle slot. maxSeparation of a pair: the speculative distance plus the distance the
+// two may close within dt.
+template <class T>
+std::vector<ContactConstraintT<T>> findContacts(const std::vector<BodyT<T>>& bodies,
+                                                std::span<const std::uint32_t> slots,
+                                                const Obstacles& obstacles,
+                                                const RigidSettings& s, T dt, T& deepest) {
+  const auto n = std::uint32_t(bodies.size());
+  const std::uint32_t dummy = n;
+  BoxStream bounds;
+  bounds.reserve(n);
+  std::vector<T> travel(n);
+  std::vector<Aabb> boxes(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    travel[i] = bodies[i].v.norm() * dt;
+    const Vec3<T> r = reach(bodies[i]).array() + T(s.speculativeDistance) / 2 + travel[i];
+    // Rounded outward to float: the grown box covers the body in either precision.
+    const Vec3f lo = (bodies[i].x - r).template cast<float>().array() - 1e-4f * (1 + r.template cast<float>().array());
+    const Vec3f hi = (bodies[i].x + r).template cast<float>().array() + 1e-4f * (1 + r.template cast<float>().array());
+    boxes[i] = {lo, hi};
+    bounds.push(boxes[i]);
+  }
+  std::vector<Pair> pairs;
+  findPairs(bounds, pairs);
+  std::vector<ContactConstraintT<T>> contacts;
+  std::vector<std::pair<std::uint64_t, Pair>> keyed;
+  keyed.reserve(pairs.size());
+  for (const Pair& p : pairs) {
+    if (bodies[p.a].invMass == 0 && bodies[p.b].invMass == 0) continue;
+    // A is the body of the lower slot, so the pair keeps its order (and ids) as indices move.
+    const Pair ordered = slots[p.a] < slots[p.b] ? p : Pair{p.b, p.a};
+    keyed.push_back({pairKey(slots[ordered.a], slots[ordered.b]), ordered});
+  }
+  std::sort(keyed.begin(), keyed.end(),
+            [](const auto& l, const auto& r) { return l.first < r.first; });
+  deepest = 0;
+  const auto record = [&](const ManifoldT<T>& m) {
+    for (int i = 0; i < m.count; ++i) deepest = std::max(deepest, -m.points[std::size_t(i)].separation);
+  };
+  for (const auto& [key, p] : keyed) {
+    const BodyT<T>&a = bodies[p.a], &b = bodies[p.b];
+    const ManifoldT<T> m =
+        collideBody(a, b, T(s.speculativeDistance) + travel[p.a] + travel[p.b]);
+    record(m);
+    addConstraint(contacts, m, p.a, p.b, a.x, b.x, std::sqrt(a.friction * b.friction),
+                  std::max(a.restitution, b.restitution), false, key);
+  }
+  const std::span<const ObstacleShape> shapes = obstacles.shapes();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (bodies[i].invMass == 0) continue;  // kinematic bodies pass through obstacles
+    for (std::uint32_t o = 0; o < shapes.size(); ++o) {
+      if (!mayTouch(shapes[o], boxes[i])) continue;
+      const ManifoldT<T> m =
+          collideObstacle(bodies[i], shapes[o], T(s.speculativeDistance) + travel[i]);
+      record(m);
+      // Obstacles carry the world's friction of the body (W5: 0.6 on every contact).
+      addConstraint(contacts, m, i, dummy, bodies[i].x, Vec3<T>(Vec3<T>::Zero()), bodies[i].friction,
+                    bodies[i].restitution, true, pairKey(slots[i], kObstacleBit | o));
+    }
+  }
+  return contacts;
+}
+
+}  // namespace simdphys::detail

@@ -1,0 +1,156 @@
+// One rigid-body step (rigid.hpp) on Eigen, templated on the scalar: find the contacts, warm
+// start them from last step's, then the substeps of the contact model, restitution, and the
+// impulses kept for the next step.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "src/reference/rigid/narrowphase-inl.hpp"
+#include "src/reference/rigid/solver-inl.hpp"
+
+namespace simdphys::detail {
+
+struct RigidStepStats {
+  double deepest = 0;
+  std::size_t manifolds = 0, points = 0;
+};
+
+// Last step's impulses for the contacts whose key and feature ids match.
+template <class T>
+void warmStartFrom(const std::vector<CachedManifoldT<T>>& cache,
+                   std::vector<ContactConstraintT<T>>& contacts) {
+  for (ContactConstraintT<T>& c : contacts) {
+    const auto it = std::lower_bound(cache.begin(), cache.end(), c.key,
+                                     [](const CachedManifoldT<T>& m, std::uint64_t k) { return m.key < k; });
+    if (it == cache.end() || it->key != c.key) continue;
+    for (int i = 0; i < c.count; ++i)
+      for (int j = 0; j < it->count; ++j)
+        if (it->id[j] == c.points[std::size_t(i)].id) {
+          ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
+          p.normalImpulse = it->impulse[j][0];
+          p.tangentImpulse[0] = it->impulse[j][1];
+          p.tangentImpulse[1] = it->impulse[j][2];
+        }
+  }
+}
+
+template <class T>
+void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
+                  std::vector<CachedManifoldT<T>>& cache) {
+  cache.clear();
+  for (const ContactConstraintT<T>& c : contacts) {
+    CachedManifoldT<T> m{c.key, c.count, {}, {}};
+    for (int i = 0; i < c.count; ++i) {
+      const ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
+      m.id[i] = p.id;
+      m.impulse[i][0] = p.normalImpulse;
+      m.impulse[i][1] = p.tangentImpulse[0];
+      m.impulse[i][2] = p.tangentImpulse[1];
+    }
+    cache.push_back(m);
+  }
+  std::sort(cache.begin(), cache.end(), [](const auto& l, const auto& r) { return l.key < r.key; });
+}
+
+// Gravity, forces and damping.
+template <class T>
+void integrateVelocities(const std::vector<BodyT<T>>& bodies, std::vector<SolverBodyT<T>>& solver,
+                         const RigidSettings& s, T h) {
+  const Vec3<T> g = s.gravity.template cast<T>();
+  const T linear = 1 / (1 + h * T(s.linearDamping)), angular = 1 / (1 + h * T(s.angularDamping));
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const BodyT<T>& b = bodies[i];
+    SolverBodyT<T>& sb = solver[i];
+    if (b.invMass == 0) continue;
+    sb.v = linear * (sb.v + h * (g + b.invMass * b.force));
+    sb.w = angular * (sb.w + h * (sb.invInertia * b.torque));
+  }
+}
+
+// q turned by the rotation vector r (first order, normalised).
+template <class T>
+Quat<T> turned(const Quat<T>& q, const Vec3<T>& r) {
+  Quat<T> out = q;
+  out.coeffs() += (Quat<T>(0, r.x(), r.y(), r.z()) * q).coeffs() * T(0.5);
+  return out.normalized();
+}
+
+// Moves the bodies by their velocities. A body's angular momentum L = I w is kept through the
+// turn, which is taken at the rate of the turn's midpoint, w = I^-1 L there (second order), and
+// w = I'^-1 L at the new orientation: a free body tumbles with L fixed and its energy drifting
+// at O(h^2), where an explicit w x Iw term gains energy and an implicit one loses it at O(h).
+template <class T>
+void integratePositions(const std::vector<BodyT<T>>& bodies, std::vector<SolverBodyT<T>>& solver,
+                        T h) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const BodyT<T>& body = bodies[i];
+    SolverBodyT<T>& b = solver[i];
+    b.dp += h * b.v;
+    if (body.invMass == 0) {
+      b.dq = turned(b.dq, Vec3<T>(h * b.w));
+      continue;
+    }
+    const auto rate = [&](const Quat<T>& q, const Vec3<T>& L) {
+      return Vec3<T>(q * Vec3<T>(body.invInertia.cwiseProduct(q.conjugate() * L)));
+    };
+    const Quat<T> was = b.dq * body.q;
+    const Vec3<T> L = was * Vec3<T>(body.invInertia.cwiseInverse().cwiseProduct(was.conjugate() * b.w));
+    const Vec3<T> mid = rate(turned(was, Vec3<T>(T(0.5) * h * b.w)), L);
+    b.dq = turned(b.dq, Vec3<T>(h * mid));
+    b.w = rate(b.dq * body.q, L);
+  }
+}
+
+// One step of dt: bodies (their positions, orientations and velocities) move; `cache` holds
+// last step's impulses and receives this step's.
+template <class T>
+RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> slots,
+                         std::vector<CachedManifoldT<T>>& cache, const Obstacles& obstacles,
+                         const RigidSettings& s, T dt) {
+  RigidStepStats stats;
+  T deepest = 0;
+  std::vector<ContactConstraintT<T>> contacts =
+      findContacts(bodies, slots, obstacles, s, dt, deepest);
+  stats.deepest = double(deepest);
+  stats.manifolds = contacts.size();
+  for (const auto& c : contacts) stats.points += std::size_t(c.count);
+  if (s.warmStarting) warmStartFrom(cache, contacts);
+
+  const std::size_t n = bodies.size();
+  std::vector<SolverBodyT<T>> solver(n + 1);  // the last: the static dummy of obstacle contacts
+  for (std::size_t i = 0; i < n; ++i) {
+    const Mat3<T> R = bodies[i].q.toRotationMatrix();
+    solver[i].v = bodies[i].v, solver[i].w = bodies[i].w, solver[i].invMass = bodies[i].invMass;
+    solver[i].invInertia = R * bodies[i].invInertia.asDiagonal() * R.transpose();
+  }
+  prepareContacts(contacts, solver);
+
+  const T h = dt / T(s.substeps);
+  SolveParams<T> p{s.model, h, 1 / h, {}, {}, T(s.maxPushSpeed), T(s.baumgarte), T(s.linearSlop)};
+  const T hertz = std::min(T(s.contactHertz), T(0.25) / h);
+  p.soft = Softness<T>(hertz, T(s.contactDampingRatio), h);
+  p.staticSoft = Softness<T>(2 * hertz, T(s.contactDampingRatio), h);
+  for (int sub = 0; sub < s.substeps; ++sub) {
+    integrateVelocities(bodies, solver, s, h);
+    warmStart(contacts, solver);
+    for (int it = 0; it < s.iterations; ++it) solveContacts(contacts, solver, p, true);
+    integratePositions(bodies, solver, h);
+    if (s.model == ContactModel::kProjection)
+      projectPositions(contacts, solver, T(s.projection), T(s.linearSlop));
+    if (s.model == ContactModel::kSoftStep)
+      for (int it = 0; it < s.iterations; ++it) solveContacts(contacts, solver, p, false);
+  }
+  applyRestitution(contacts, solver, T(s.restitutionThreshold));
+
+  for (std::size_t i = 0; i < n; ++i) {
+    BodyT<T>& b = bodies[i];
+    b.x += solver[i].dp;
+    b.q = (solver[i].dq * b.q).normalized();
+    b.v = solver[i].v, b.w = solver[i].w;
+  }
+  keepImpulses(contacts, cache);
+  return stats;
+}
+
+}  // namespace simdphys::detail

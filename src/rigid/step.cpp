@@ -1,0 +1,86 @@
+// The rigid bodies' step (src/rigid/step.hpp): the streams to the reference's bodies and back.
+#include "src/rigid/step.hpp"
+
+#include <string>
+
+#include "src/reference/rigid/step-inl.hpp"
+#include "src/reference/validate-inl.hpp"
+
+namespace simdphys {
+
+namespace F = fields;
+using Internals = RigidBodies::Internals;
+
+template <class T>
+std::vector<detail::BodyT<T>> Internals::load(const RigidBodies& r) {
+  const auto vec = [&](std::size_t f, std::size_t i) {
+    return Vec3<T>(T(r.value(f, i)), T(r.value(f + 1, i)), T(r.value(f + 2, i)));
+  };
+  std::vector<detail::BodyT<T>> out(r.size());
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    detail::BodyT<T>& b = out[i];
+    b.x = vec(F::Body::x, i), b.v = vec(F::Body::vx, i), b.w = vec(F::Body::wx, i);
+    b.q = Quat<T>(T(r.value(F::Body::qw, i)), T(r.value(F::Body::qx, i)), T(r.value(F::Body::qy, i)),
+                  T(r.value(F::Body::qz, i)));
+    b.invMass = T(r.value(F::Body::invMass, i));
+    b.invInertia = vec(F::Body::invIx, i);
+    b.shape = BodyShape(int(r.value(F::Body::shape, i)));
+    b.half = vec(F::Body::ex, i);
+    b.friction = T(r.value(F::Body::friction, i));
+    b.restitution = T(r.value(F::Body::restitution, i));
+    b.force = vec(F::Body::fx, i), b.torque = vec(F::Body::tx, i);
+    b.kinematic = b.invMass == 0;
+  }
+  return out;
+}
+
+template <class T>
+void Internals::store(RigidBodies& r, const std::vector<detail::BodyT<T>>& state) {
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    const detail::BodyT<T>& b = state[i];
+    r.storeVec(F::Body::x, i, b.x.template cast<float>());
+    r.storeVec(F::Body::vx, i, b.v.template cast<float>());
+    r.storeVec(F::Body::wx, i, b.w.template cast<float>());
+    r.storeVec(F::Body::qx, i, b.q.vec().template cast<float>());
+    r.paddedData(F::Body::qw)[i] = float(b.q.w());
+  }
+}
+
+std::vector<std::uint32_t> Internals::slots(const RigidBodies& r) {
+  std::vector<std::uint32_t> out(r.size());
+  for (std::uint32_t i = 0; i < r.size(); ++i) out[i] = r.handles_.handle(i).slot;
+  return out;
+}
+
+template std::vector<detail::BodyT<float>> Internals::load(const RigidBodies&);
+template std::vector<detail::BodyT<double>> Internals::load(const RigidBodies&);
+template void Internals::store(RigidBodies&, const std::vector<detail::BodyT<float>>&);
+template void Internals::store(RigidBodies&, const std::vector<detail::BodyT<double>>&);
+
+void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
+                     const std::string& where) {
+  using namespace detail;
+  std::vector<BodyT<float>> state = Internals::load<float>(bodies);
+  const std::vector<std::uint32_t> slots = Internals::slots(bodies);
+  std::vector<CachedManifoldT<float>> cache = bodies.cache_;
+  const RigidStepStats stats = stepState(state, slots, cache, obstacles, bodies.settings(), dt);
+  // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    const std::string body = where + ": body " + std::to_string(i);
+    requireFiniteField(state[i].x, body, "position after the step");
+    requireFiniteField(state[i].v, body, "velocity after the step");
+    requireFiniteField(state[i].w, body, "angular velocity after the step");
+  }
+  Internals::store(bodies, state);
+  bodies.cache_ = std::move(cache);
+  bodies.deepest_ = float(stats.deepest);
+  bodies.manifolds_ = stats.manifolds;
+  bodies.points_ = stats.points;
+}
+
+void detail::stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt,
+                        const std::string& where) {
+  Internals::step(bodies, obstacles, dt, where);
+}
+
+}  // namespace simdphys
