@@ -18,7 +18,11 @@
 // both boxes and the cross products of their edges) with the axis of least penetration chosen,
 // faces preferred over edges within a tolerance (so resting stacks do not flicker between axes);
 // face contacts clip the incident face against the reference face's side planes and keep at most
-// four points (the deepest, and those spanning the largest area); edge contacts give one point.
+// four points (the deepest, and those spanning the largest area); edge contacts give one point,
+// midway between the edges' closest points (when those lie between the edges' ends; otherwise a
+// vertex is nearer and the best face axis is used). Near-parallel edge pairs (sine of their angle
+// below sqrt(eps)) give no axis. A speculative face contact may miss apart boxes whose closest
+// features are two vertices or a vertex and an edge, where the SAT only bounds the distance.
 #pragma once
 
 #include <array>
