@@ -18,7 +18,11 @@
 // both boxes and the cross products of their edges) with the axis of least penetration chosen,
 // faces preferred over edges within a tolerance (so resting stacks do not flicker between axes);
 // face contacts clip the incident face against the reference face's side planes and keep at most
-// four points (the deepest, and those spanning the largest area); edge contacts give one point.
+// four points (the deepest, and those spanning the largest area); edge contacts give one point,
+// midway between the edges' closest points (when those lie between the edges' ends; otherwise a
+// vertex is nearer and the best face axis is used). Near-parallel edge pairs (sine of their angle
+// below sqrt(eps)) give no axis. A speculative face contact may miss apart boxes whose closest
+// features are two vertices or a vertex and an edge, where the SAT only bounds the distance.
 #pragma once
 
 #include <array>
@@ -42,6 +46,23 @@ struct ManifoldT {
   int count = 0;
   std::array<ContactPointT<T>, kMaxPoints> points{};
 };
+
+// Box-box: of two axes of nearly equal separation, B's face is taken over A's, and an edge over
+// the faces, only when its separation is larger by kBoxAxisRelativeTolerance |separation| +
+// kBoxAxisAbsoluteTolerance (the smaller box's largest half extent), so that a resting stack keeps
+// its axis (and its points' ids) from frame to frame (box2d-lite's and qu3e's 0.95 and 0.01). The
+// manifold's depth may then exceed the least penetration by up to that much.
+template <class T>
+inline constexpr T kBoxAxisRelativeTolerance = T(0.05);
+template <class T>
+inline constexpr T kBoxAxisAbsoluteTolerance = T(1e-3);
+
+// Box-box face contacts: a corner of the incident face within kBoxClipSnap (times the smaller
+// box's largest half extent) outside a side plane of the reference face is kept as it is, rather
+// than clipped into two nearly coincident points, so that flush faces (a stack of equal boxes)
+// keep their points and ids through rounding; such a point lies up to that far outside the face.
+template <class T>
+inline constexpr T kBoxClipSnap = T(1e-4);
 
 using ContactPoint = ContactPointT<float>;
 using Manifold = ManifoldT<float>;

@@ -1,13 +1,232 @@
-// Box-box manifolds (rigid/manifold.hpp): to be written.
+// Box-box manifolds (rigid/manifold.hpp): the separating axis test over the 15 axes, then a face
+// contact (the incident face clipped against the reference face's side planes, at most four
+// points kept) or an edge contact (one point between the two edges' closest points). As in
+// box2d-lite's Collide.cpp, qu3e's q3BoxtoBox and Jolt's ManifoldBetweenTwoFaces.
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "simdphys/geometry3d/point_tests.hpp"
 #include "src/reference/rigid/manifold-inl.hpp"
+
+namespace simdphys::detail {
+
+// Edge pairs whose sine of angle is below this give no axis: their cross product's direction is
+// rounding noise there (its error is about eps / sine), and the face axes bound the separation
+// on it to within sine times the boxes' size. sqrt(eps) balances the two.
+template <class T>
+T parallelSine() {
+  return std::sqrt(std::numeric_limits<T>::epsilon());
+}
+
+// Half the extent of a box along the unit axis l.
+template <class T>
+T projectedRadius(const ObbT<T>& box, const Vec3<T>& l) {
+  return (box.axes.transpose() * l).cwiseAbs().dot(box.halfExtents);
+}
+
+// A vertex of the clipped incident face, with the labels of the polygon's edges into and out of
+// it: 0-3 the incident face's edges, 4-7 the reference face's side planes. The pair names what
+// the point is (an incident corner, an incident edge through a side plane, a reference corner),
+// the same from frame to frame; the out label alone differs between the vertices of a convex
+// polygon, so the pair is unique within it.
+template <class T>
+struct ClipVertex {
+  Vec3<T> p;
+  std::uint32_t in, out;
+};
+template <class T>
+struct ClipPolygon {
+  std::array<ClipVertex<T>, 8> v;  // 4 corners, and each of the 4 clips adds at most one
+  int n = 0;
+  void push(const ClipVertex<T>& x) {
+    if (n < int(v.size())) v[std::size_t(n++)] = x;
+  }
+};
+
+// Sutherland-Hodgman: the part of `poly` where side.(p - origin) <= h; the new vertices, where an
+// edge crosses the plane, take `label` for the part of the polygon that now runs along it. A
+// vertex within `snap` of the plane counts as on it: kept as itself, never doubled by a crossing
+// point next to it (flush faces of a stack then keep their corners' ids through rounding).
+template <class T>
+ClipPolygon<T> clip(const ClipPolygon<T>& poly, const Vec3<T>& side, const Vec3<T>& origin, T h,
+                    T snap, std::uint32_t label) {
+  ClipPolygon<T> out;
+  for (int k = 0; k < poly.n; ++k) {
+    const ClipVertex<T>& p = poly.v[std::size_t(k)];
+    const ClipVertex<T>& q = poly.v[std::size_t((k + 1) % poly.n)];
+    const T dp = side.dot(p.p - origin) - h, dq = side.dot(q.p - origin) - h;
+    if (dp <= snap) out.push(p);
+    if ((dp < -snap && dq > snap) || (dp > snap && dq < -snap)) {
+      const Vec3<T> x = p.p + (dp / (dp - dq)) * (q.p - p.p);
+      out.push(dp < 0 ? ClipVertex<T>{x, p.out, label} : ClipVertex<T>{x, label, p.out});
+    }
+  }
+  return out;
+}
+
+// The indices of at most four of the n points to keep, in the order picked (Jolt's
+// PruneContactPoints, Box2D): the deepest, the farthest from it, the one spanning the largest
+// triangle with those two, and the one adding the most area outside that triangle.
+template <class T, std::size_t N>
+int keepFour(const std::array<ContactPointT<T>, N>& c, int n, const Vec3<T>& normal,
+             std::array<int, 4>& keep) {
+  if (n <= 4) {
+    for (int i = 0; i < n; ++i) keep[std::size_t(i)] = i;
+    return n;
+  }
+  std::array<bool, N> taken{};
+  const auto pick = [&](auto score) {
+    int best = -1;
+    T bestScore = -std::numeric_limits<T>::infinity();
+    for (int i = 0; i < n; ++i)
+      if (!taken[std::size_t(i)] && (best < 0 || score(c[std::size_t(i)].point) > bestScore))
+        best = i, bestScore = score(c[std::size_t(i)].point);
+    taken[std::size_t(best)] = true;
+    return best;
+  };
+  const auto at = [&](int k) { return c[std::size_t(keep[std::size_t(k)])].point; };
+  keep[0] = 0;
+  for (int i = 1; i < n; ++i)
+    if (c[std::size_t(i)].separation < c[std::size_t(keep[0])].separation) keep[0] = i;
+  taken[std::size_t(keep[0])] = true;
+  keep[1] = pick([&](const Vec3<T>& p) { return (p - at(0)).squaredNorm(); });
+  const auto area = [&](const Vec3<T>& p, const Vec3<T>& q, const Vec3<T>& r) {
+    return normal.dot((q - p).cross(r - p));  // twice the signed area, seen along the normal
+  };
+  keep[2] = pick([&](const Vec3<T>& p) { return std::abs(area(at(0), at(1), p)); });
+  const T orient = area(at(0), at(1), at(2)) < 0 ? T(-1) : T(1);
+  keep[3] = pick([&](const Vec3<T>& p) {
+    const T outside0 = -orient * area(at(0), at(1), p), outside1 = -orient * area(at(1), at(2), p);
+    return std::max({outside0, outside1, -orient * area(at(2), at(0), p)});
+  });
+  return 4;
+}
+
+}  // namespace simdphys::detail
 
 namespace simdphys {
 
 template <class T>
-ManifoldT<T> collide(const ObbT<T>&, const ObbT<T>&, T) {
-  return {};
+ManifoldT<T> collide(const ObbT<T>& a, const ObbT<T>& b, T maxSeparation) {
+  using namespace detail;
+  // Everything is relative to A's centre (float keeps its precision far from the origin).
+  const Vec3<T> d = b.center - a.center;
+  const T size = std::min(a.halfExtents.maxCoeff(), b.halfExtents.maxCoeff());
+
+  // The separating axis test: the best axis of each kind (A's faces, B's faces, edge pairs).
+  struct Axis {
+    T separation = -std::numeric_limits<T>::infinity();
+    Vec3<T> l = Vec3<T>::UnitX();
+    int i = 0, j = 0;  // the axes of A and of B it comes from
+  };
+  std::array<Axis, 3> best;
+  const auto consider = [&](int kind, const Vec3<T>& l, int i, int j) {
+    const T s = std::abs(l.dot(d)) - projectedRadius(a, l) - projectedRadius(b, l);
+    if (s > best[std::size_t(kind)].separation) best[std::size_t(kind)] = {s, l, i, j};
+  };
+  for (int i = 0; i < 3; ++i) consider(0, a.axes.col(i), i, 0), consider(1, b.axes.col(i), 0, i);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Vec3<T> c = a.axes.col(i).cross(b.axes.col(j));
+      const T sine = c.norm();
+      if (sine > parallelSine<T>()) consider(2, c / sine, i, j);
+    }
+  if (std::max({best[0].separation, best[1].separation, best[2].separation}) > maxSeparation)
+    return {};
+  const auto clearlyAbove = [&](const Axis& x, const Axis& than) {
+    return x.separation > than.separation +
+                              kBoxAxisRelativeTolerance<T> * std::abs(than.separation) +
+                              kBoxAxisAbsoluteTolerance<T> * size;
+  };
+  const int face = clearlyAbove(best[1], best[0]) ? 1 : 0;
+  ManifoldT<T> m;
+  if (clearlyAbove(best[2], best[std::size_t(face)])) {
+    // Edge-edge: A's edge along axis i farthest along the normal, B's along j farthest against
+    // it; an edge's index is its axis and the sides it lies on along the other two.
+    const Axis& axis = best[2];
+    m.normal = axis.l.dot(d) < 0 ? Vec3<T>(-axis.l) : axis.l;
+    const auto supportEdge = [](const ObbT<T>& box, const Vec3<T>& centre, const Vec3<T>& dir,
+                                int k, std::uint32_t& index) {
+      Vec3<T> mid = centre;
+      index = std::uint32_t(4 * k);
+      for (int e = 0, bit = 0; e < 3; ++e) {
+        if (e == k) continue;
+        const bool negative = box.axes.col(e).dot(dir) < 0;
+        mid += (negative ? -box.halfExtents[e] : box.halfExtents[e]) * box.axes.col(e);
+        index |= std::uint32_t(negative) << bit++;
+      }
+      const Vec3<T> half = box.halfExtents[k] * box.axes.col(k);
+      return SegmentT<T>{mid - half, mid + half};
+    };
+    std::uint32_t ea = 0, eb = 0;
+    const SegmentT<T> edgeA = supportEdge(a, Vec3<T>::Zero(), m.normal, axis.i, ea);
+    const SegmentT<T> edgeB = supportEdge(b, d, Vec3<T>(-m.normal), axis.j, eb);
+    const SegmentClosestPointsT<T> cp = closestPoints(edgeA, edgeB);
+    // Only when the closest points lie between the edges' ends (they then differ by the
+    // separation along the normal); otherwise a vertex is nearer than the edges (apart boxes,
+    // whose SAT separation only bounds their distance) and a face contact describes it.
+    if (cp.s > 0 && cp.s < 1 && cp.t > 0 && cp.t < 1) {
+      // Ids past the face contacts' 2 * 6 * 6 * 64.
+      m.points[0] = {Vec3<T>(a.center + T(0.5) * (cp.first + cp.second)), axis.separation,
+                     4608 + ea * 12 + eb};
+      m.count = 1;
+      return m;
+    }
+  }
+  const Axis& axis = best[std::size_t(face)];
+  m.normal = axis.l.dot(d) < 0 ? Vec3<T>(-axis.l) : axis.l;
+
+  // Face contact: the reference face is the chosen axis's, n its outward normal (towards the
+  // other box); the incident face is the other box's face most anti-parallel to n.
+  const bool refIsA = face == 0;
+  const ObbT<T>& ref = refIsA ? a : b;
+  const ObbT<T>& inc = refIsA ? b : a;
+  const Vec3<T> refCentre = refIsA ? Vec3<T>::Zero() : d, incCentre = refIsA ? d : Vec3<T>::Zero();
+  const int k = refIsA ? axis.i : axis.j;
+  const Vec3<T> n = refIsA ? m.normal : Vec3<T>(-m.normal);
+  const std::uint32_t refFace = std::uint32_t(2 * k + (ref.axes.col(k).dot(n) < 0));
+  const Vec3<T> nInInc = inc.axes.transpose() * n;
+  int ki = 0;
+  nInInc.cwiseAbs().maxCoeff(&ki);
+  const bool negative = nInInc[ki] > 0;  // the face whose outward normal opposes n
+  const std::uint32_t incFace = std::uint32_t(2 * ki + negative);
+  const Vec3<T> faceCentre =
+      incCentre + (negative ? -inc.halfExtents[ki] : inc.halfExtents[ki]) * inc.axes.col(ki);
+  const Vec3<T> u = inc.halfExtents[(ki + 1) % 3] * inc.axes.col((ki + 1) % 3);
+  const Vec3<T> v = inc.halfExtents[(ki + 2) % 3] * inc.axes.col((ki + 2) % 3);
+  ClipPolygon<T> poly;
+  poly.push({faceCentre + u + v, 3, 0});  // corner c lies between the edges c - 1 and c
+  poly.push({faceCentre - u + v, 0, 1});
+  poly.push({faceCentre - u - v, 1, 2});
+  poly.push({faceCentre + u - v, 2, 3});
+  for (std::uint32_t s = 0; s < 4; ++s) {
+    const int e = (k + 1 + int(s / 2)) % 3;
+    const Vec3<T> side = (s % 2 ? T(-1) : T(1)) * ref.axes.col(e);
+    poly = clip(poly, side, refCentre, ref.halfExtents[e], kBoxClipSnap<T> * size, 4 + s);
+  }
+
+  // The clipped points within reach, on the incident face; the manifold's point is midway
+  // between one and its projection on the reference face.
+  std::array<ContactPointT<T>, 8> found;
+  int count = 0;
+  const std::uint32_t faces = ((refIsA ? 0 : 6) + refFace) * 6 + incFace;
+  for (int c = 0; c < poly.n; ++c) {
+    const ClipVertex<T>& x = poly.v[std::size_t(c)];
+    const T s = n.dot(x.p - refCentre) - ref.halfExtents[k];
+    if (s <= maxSeparation)
+      found[std::size_t(count++)] = {Vec3<T>(a.center + x.p - T(0.5) * s * n), s,
+                                     faces * 64 + x.in * 8 + x.out};
+  }
+  std::array<int, 4> keep{};
+  m.count = keepFour(found, count, n, keep);
+  for (int c = 0; c < m.count; ++c)
+    m.points[std::size_t(c)] = found[std::size_t(keep[std::size_t(c)])];
+  return m;
 }
 
 }  // namespace simdphys
