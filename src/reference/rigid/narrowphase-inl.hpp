@@ -80,7 +80,7 @@ void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& 
                    const Vec3<T>& centerB, T friction, T restitution, bool isStatic,
                    std::uint64_t key) {
   if (m.count == 0) return;
-  ContactConstraintT<T> c;
+  ContactConstraintT<T>& c = out.emplace_back();
   c.a = a, c.b = b, c.key = key, c.normal = m.normal, c.friction = friction;
   c.restitution = restitution, c.isStatic = isStatic, c.count = m.count;
   tangentsOf(m.normal, c.tangent);
@@ -91,7 +91,6 @@ void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& 
     p.baseSeparation = m.points[std::size_t(i)].separation;
     p.id = m.points[std::size_t(i)].id;
   }
-  out.push_back(c);
 }
 
 // The step's contacts, body pairs first (in the order of their keys) and obstacle contacts
@@ -121,6 +120,7 @@ std::vector<ContactConstraintT<T>> findContacts(const std::vector<BodyT<T>>& bod
   std::vector<Pair> pairs;
   findPairs(bounds, pairs);
   std::vector<ContactConstraintT<T>> contacts;
+  contacts.reserve(pairs.size() + n);
   std::vector<std::pair<std::uint64_t, Pair>> keyed;
   keyed.reserve(pairs.size());
   for (const Pair& p : pairs) {
