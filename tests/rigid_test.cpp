@@ -200,33 +200,35 @@ StackState stackAfter(std::vector<float> masses, int frames) {
   return out;
 }
 
-TEST(Rigid, StackOfTenBoxesStands) {
-  const StackState s = stackAfter(std::vector<float>(10, 1.0f), 300);
-  // Symmetric, it has no reason to lean: the first step's sequential impulses tilt it by a hair,
-  // and warm starting settles that; 1 cm sideways at the top is a tenth of a degree of lean.
-  EXPECT_LT(s.drift, 0.01);
-  // Each soft contact yields under its load (the closed form of HeavyBoxOnLightBox...): about
-  // 3 mm under nine boxes, less above; the top sinks by less than the 9 contacts' 3 cm.
+TEST(Rigid, StackOfTwentyBoxesStands) {
+  const StackState s = stackAfter(std::vector<float>(20, 1.0f), 600);
+  // Stands by W5's rule (every box within 0.5 of its start) with room to spare: the column
+  // sways, the first steps' loading having nudged it (0.07 m at the top at most over 30 s,
+  // measured); at 30 Hz contacts it buckles and falls within 10 s.
+  EXPECT_LT(s.drift, 0.25);
+  // Each soft contact yields under its load by W / (4 M w^2) (the closed form of the test
+  // below): 1 to 19 boxes' weight on the 19 contacts under the top, 2 cm in all at 60 Hz.
   EXPECT_LT(s.sink.back(), 0.03);
 }
 
 // A box of mass 100 on a box of mass 1: it stands, and the contact between them yields by the
-// soft contact's closed form. At rest each substep's impulse carries the weight, W h, and the
-// soft solve (Box2D's massScale, impulseScale, biasRate at 30 Hz, damping ratio 10,
-// h = 1/240 s) balances it at depth s = impulseScale W h / (4 M massScale biasRate) over four
-// points of effective mass M = 1 / (1 + 1/100 + 3 + 3/100) (corner anchors: |r x n|^2 / I = 3
-// for a unit cube of 1 kg): s = 2.8 cm.
+// soft contact's closed form. At rest each substep's impulse carries the weight, and the soft
+// solve (Box2D's massScale, impulseScale and biasRate for a spring of frequency w = 2 pi 60 Hz)
+// balances it where each of the four points is a spring of stiffness M w^2, M the point's
+// effective mass, 1 / (1 + 1/100 + 3 + 3/100) (corner anchors: |r x n|^2 / I = 3 for a unit
+// cube of 1 kg): at depth W / (4 M w^2) = 7.0 mm.
 TEST(Rigid, HeavyBoxOnLightBoxStandsAtTheSoftContactsDepth) {
   const StackState s = stackAfter({1.0f, 100.0f}, 300);
-  const double h = 1.0 / 240, omega = 2 * std::numbers::pi * 30, zeta = 10;
-  const double a1 = 2 * zeta + h * omega, a2 = h * omega * a1, a3 = 1 / (1 + a2);
+  const double omega = 2 * std::numbers::pi * RigidSettings{}.contactHertz;
   const double M = 1 / (1 + 0.01 + 3 + 0.03);
-  const double depth = a3 * 100 * 9.82 * h / (4 * M * (a2 * a3) * (omega / a1));
+  const double depth = 100 * 9.82 / (4 * M * omega * omega);
   // Between the two boxes: the top's sink less the bottom's (on the ground, stiffer). 5%: the
   // four points are solved in turn, not as one block, and the speculative distance and float
   // rounding move the balance by a few tenths of a millimetre.
   EXPECT_NEAR((s.sink[1] - s.sink[0]) / depth, 1.0, 0.05);
-  EXPECT_LT(s.drift, 0.01);
+  // Not sliding off: the first steps' loading, solved point by point, nudges it sideways
+  // (1 mm measured), then it rests; 5 mm is a twentieth of the way to its edge.
+  EXPECT_LT(s.drift, 5e-3);
 }
 
 // A box dropped on its corner tips over and comes to rest on a face.

@@ -96,12 +96,13 @@ T currentSeparation(const SolverBodyT<T>& a, const SolverBodyT<T>& b,
 // One pass over the contacts: normal impulses (biased by the model when useBias), then friction.
 template <class T>
 void solveContacts(std::vector<ContactConstraintT<T>>& contacts,
-                   std::vector<SolverBodyT<T>>& bodies, const SolveParams<T>& s, bool useBias) {
+                   std::vector<SolverBodyT<T>>& bodies, const SolveParams<T>& s, bool useBias,
+                   bool reverse) {
   for (ContactConstraintT<T>& c : contacts) {
     SolverBodyT<T>&a = bodies[c.a], &b = bodies[c.b];
     const Softness<T>& soft = c.isStatic ? s.staticSoft : s.soft;
-    for (int i = 0; i < c.count; ++i) {
-      ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
+    for (int k = 0; k < c.count; ++k) {
+      ContactPointConstraintT<T>& p = c.points[std::size_t(reverse ? c.count - 1 - k : k)];
       const T sep = currentSeparation(a, b, p, c.normal);
       T bias = 0, massScale = 1, impulseScale = 0;
       if (sep > 0) {
@@ -125,16 +126,16 @@ void solveContacts(std::vector<ContactConstraintT<T>>& contacts,
       if (total > 0) p.relativeVelocity = std::min(p.relativeVelocity, vn);
       applyImpulse(a, b, p.rA, p.rB, Vec3<T>(impulse * c.normal));
     }
-    for (int i = 0; i < c.count; ++i) {
-      ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
+    for (int k = 0; k < c.count; ++k) {
+      ContactPointConstraintT<T>& p = c.points[std::size_t(reverse ? c.count - 1 - k : k)];
       const T limit = c.friction * p.normalImpulse;
-      for (int k = 0; k < 2; ++k) {
-        const T vt = relativeVelocity(a, b, p.rA, p.rB).dot(c.tangent[k]);
-        T impulse = -p.tangentMass[k] * vt;
-        const T total = std::clamp(p.tangentImpulse[k] + impulse, -limit, limit);
-        impulse = total - p.tangentImpulse[k];
-        p.tangentImpulse[k] = total;
-        applyImpulse(a, b, p.rA, p.rB, Vec3<T>(impulse * c.tangent[k]));
+      for (int j = 0; j < 2; ++j) {
+        const T vt = relativeVelocity(a, b, p.rA, p.rB).dot(c.tangent[j]);
+        T impulse = -p.tangentMass[j] * vt;
+        const T total = std::clamp(p.tangentImpulse[j] + impulse, -limit, limit);
+        impulse = total - p.tangentImpulse[j];
+        p.tangentImpulse[j] = total;
+        applyImpulse(a, b, p.rA, p.rB, Vec3<T>(impulse * c.tangent[j]));
       }
     }
   }

@@ -134,12 +134,16 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   for (int sub = 0; sub < s.substeps; ++sub) {
     integrateVelocities(bodies, solver, s, h);
     warmStart(contacts, solver);
-    for (int it = 0; it < s.iterations; ++it) solveContacts(contacts, solver, p, true);
+    // The points of a manifold are solved in turn, forward in one pass and backward in the
+    // next, so the order's bias (the first point takes the load and turns the body) cancels.
+    for (int it = 0; it < s.iterations; ++it)
+      solveContacts(contacts, solver, p, true, ((sub + it) & 1) != 0);
     integratePositions(bodies, solver, h);
     if (s.model == ContactModel::kProjection)
       projectPositions(contacts, solver, T(s.projection), T(s.linearSlop));
     if (s.model == ContactModel::kSoftStep)
-      for (int it = 0; it < s.iterations; ++it) solveContacts(contacts, solver, p, false);
+      for (int it = 0; it < s.iterations; ++it)
+        solveContacts(contacts, solver, p, false, ((sub + it) & 1) == 0);
   }
   applyRestitution(contacts, solver, T(s.restitutionThreshold));
 
