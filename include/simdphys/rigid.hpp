@@ -141,6 +141,10 @@ class RigidBodies : public StreamSet<fields::Body> {
   float deepestPenetration() const { return deepest_; }
   std::size_t manifoldCount() const { return manifolds_; }
   std::size_t contactPointCount() const { return points_; }
+  // The graph colours the last step's manifolds took (at most 24), and those no colour took
+  // (solved one at a time).
+  std::size_t colourCount() const { return colours_; }
+  std::size_t overflowCount() const { return overflow_; }
 
   struct Internals;  // src/rigid/: the step's access to the streams and the contact cache
 
@@ -154,7 +158,7 @@ class RigidBodies : public StreamSet<fields::Body> {
   HandleTable handles_;
   std::vector<detail::CachedManifoldT<float>> cache_;
   float deepest_ = 0;
-  std::size_t manifolds_ = 0, points_ = 0;
+  std::size_t manifolds_ = 0, points_ = 0, colours_ = 0, overflow_ = 0;
 };
 
 }  // namespace simdphys

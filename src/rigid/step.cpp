@@ -76,6 +76,8 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
   bodies.deepest_ = float(stats.deepest);
   bodies.manifolds_ = stats.manifolds;
   bodies.points_ = stats.points;
+  bodies.colours_ = stats.colours;
+  bodies.overflow_ = stats.overflow;
 }
 
 void detail::stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt,

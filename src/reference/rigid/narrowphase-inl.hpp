@@ -93,8 +93,56 @@ void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& 
   }
 }
 
+// Graph colouring (Box2D v3's constraint graph): each contact takes the first of kColours colours
+// in which neither of its moving bodies has a contact yet, so a colour's contacts share no moving
+// body and are solved lane-wide at once, in any order, with the same result. Contacts between
+// moving bodies are coloured first; contacts with an obstacle or a kinematic body (one moving
+// body) take colours after theirs, so the solver meets them last (they stop push-through).
+// Contacts no colour takes go to the overflow, solved first, one at a time. Returns the
+// contacts in solving order and each colour's first contact (kColours + 2 offsets: the
+// overflow, then the colours).
+inline constexpr int kColours = 24;
+
+template <class T>
+std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& contacts,
+                                          const std::vector<BodyT<T>>& bodies) {
+  const std::size_t n = bodies.size(), words = (n + 63) / 64;
+  std::vector<std::uint64_t> used(std::size_t(kColours) * words, 0);
+  const auto moving = [&](std::uint32_t b) { return b < n && bodies[b].invMass > 0; };
+  const auto isUsed = [&](int c, std::uint32_t b) {
+    return moving(b) && (used[std::size_t(c) * words + b / 64] >> (b % 64) & 1) != 0;
+  };
+  const auto take = [&](int c, std::uint32_t b) {
+    if (moving(b)) used[std::size_t(c) * words + b / 64] |= std::uint64_t(1) << (b % 64);
+  };
+  // Colours for the two kinds, the one-body contacts after the last colour the others take.
+  std::vector<int> colour(contacts.size(), -1);
+  int twoBodyColours = 0;
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      const ContactConstraintT<T>& c = contacts[i];
+      if ((moving(c.a) && moving(c.b)) != (pass == 0)) continue;
+      for (int k = pass == 0 ? 0 : std::min(twoBodyColours, kColours - 1); k < kColours; ++k)
+        if (!isUsed(k, c.a) && !isUsed(k, c.b)) {
+          take(k, c.a), take(k, c.b), colour[i] = k;
+          if (pass == 0) twoBodyColours = std::max(twoBodyColours, k + 1);
+          break;
+        }
+    }
+  // Stable by colour, the overflow (-1) first.
+  std::vector<std::uint32_t> begin(kColours + 2, 0);
+  for (const int c : colour) ++begin[std::size_t(c + 2)];
+  for (std::size_t k = 1; k < begin.size(); ++k) begin[k] += begin[k - 1];
+  std::vector<ContactConstraintT<T>> ordered(contacts.size());
+  std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    ordered[next[std::size_t(colour[i] + 1)]++] = contacts[i];
+  contacts.swap(ordered);
+  return begin;
+}
+
 // The step's contacts, body pairs first (in the order of their keys) and obstacle contacts
-// after, so the solver meets the static contacts last (they stop push-through). `slots`: each
+// after (colourContacts then orders them for the solver). `slots`: each
 // body's handle slot. maxSeparation of a pair: the speculative distance plus the distance the
 // two may close within dt.
 template <class T>

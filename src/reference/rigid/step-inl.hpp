@@ -13,7 +13,7 @@ namespace simdphys::detail {
 
 struct RigidStepStats {
   double deepest = 0;
-  std::size_t manifolds = 0, points = 0;
+  std::size_t manifolds = 0, points = 0, colours = 0, overflow = 0;
 };
 
 // Last step's impulses for the contacts whose key and feature ids match.
@@ -112,6 +112,10 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   T deepest = 0;
   std::vector<ContactConstraintT<T>> contacts =
       findContacts(bodies, slots, obstacles, s, dt, deepest);
+  const std::vector<std::uint32_t> colourBegin = colourContacts(contacts, bodies);
+  stats.overflow = colourBegin[1];
+  for (std::size_t k = 1; k + 1 < colourBegin.size(); ++k)
+    stats.colours += colourBegin[k + 1] > colourBegin[k] ? 1 : 0;
   stats.deepest = double(deepest);
   stats.manifolds = contacts.size();
   for (const auto& c : contacts) stats.points += std::size_t(c.count);
