@@ -102,4 +102,17 @@ void clothCounters(benchmark::State& state, const workloads::ClothWorkload& w,
   state.counters["finite"] = finite ? 1 : 0;
 }
 
+void pyramidCounters(benchmark::State& state, std::span<const Vec3f> start,
+                     std::span<const Vec3f> end, int frames, double seconds, double deepest) {
+  const workloads::PyramidMeasures m = workloads::measurePyramid(start, end);
+  const double bodySteps = double(start.size()) * frames;
+  state.counters["frames"] = frames;
+  state.counters["ms_per_frame"] = seconds * 1e3 / frames;
+  state.counters["body_steps_per_s"] = bodySteps / seconds;
+  state.counters["max_displacement"] = m.maxDisplacement;
+  state.counters["deepest_penetration"] = deepest;
+  state.counters["standing"] = m.standing ? 1 : 0;
+  state.SetItemsProcessed(std::int64_t(bodySteps));
+}
+
 }  // namespace simdphys::bench

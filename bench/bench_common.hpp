@@ -15,6 +15,7 @@
 #include <string>
 
 #include "cloth.hpp"
+#include "pyramid.hpp"
 #include "simdphys/core.hpp"
 #include "simdphys/geometry3d/streams.hpp"
 #include "workloads.hpp"
@@ -46,6 +47,14 @@ void registerOnce(const std::string& task, const std::string& method, const std:
 // deepest penetration over every frame and whether every position stayed finite.
 void clothCounters(benchmark::State& state, const workloads::ClothWorkload& w,
                    std::span<const Vec3f> x, double deepest, bool finite);
+
+// W5's figures of a pyramid run (workloads/pyramid.hpp) as the run's counters, the same for every
+// solver: frames; ms_per_frame and body_steps_per_s (boxes x frames / s) over `seconds`, the time
+// the frames' steps took; items processed (body steps); max_displacement and standing, from
+// measurePyramid of the boxes' centres at the end (`end`) against `start`; deepest_penetration,
+// the engine's own contact depth, the largest over every frame.
+void pyramidCounters(benchmark::State& state, std::span<const Vec3f> start,
+                     std::span<const Vec3f> end, int frames, double seconds, double deepest);
 
 // Marks the run as failed if `found` differs from `expected`, else records both.
 bool checkExact(benchmark::State& state, std::uint64_t found, std::uint64_t expected);

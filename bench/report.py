@@ -34,7 +34,7 @@ TASKS = {
     "pairs2d": ("pairs/s", "banded_sweep"), "narrow2d": ("candidate pairs/s", None),
     "scene_build": ("boxes/s", None),
     "particles": ("particle steps/s", "w4"), "world_step": ("steps/s", None),
-    "cloth": ("spring updates/s", None),
+    "cloth": ("spring updates/s", None), "pyramid": ("body steps/s", None),
     "integrate_projectile": ("particle steps/s", None),
     "integrate_oscillator": ("particle steps/s", None),
 }
