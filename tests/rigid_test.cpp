@@ -185,7 +185,9 @@ struct StackState {
   double drift = 0;
 };
 StackState stackAfter(std::vector<float> masses, int frames) {
-  World world = groundWorld();
+  RigidSettings settings;
+  settings.sleeping = false;  // the solver alone holds it (asleep, it would not move at all)
+  World world = groundWorld(settings);
   std::vector<Handle> hs;
   for (std::size_t i = 0; i < masses.size(); ++i) {
     BodyDef d;
@@ -254,6 +256,9 @@ TEST(Rigid, BoxDroppedOnItsCornerComesToRestOnAFace) {
 // reached by then: docs/rigid.md), at simdphys's defaults.
 TEST(Rigid, PyramidOfW5Stands) {
   World world;
+  RigidSettings settings;
+  settings.sleeping = false;  // W5: no sleeping
+  world.bodies().setSettings(settings);
   world.obstacles().add(workloads::kPyramidGround);
   const std::vector<Vec3f> start = workloads::pyramidCenters(10);
   std::vector<Handle> hs;
@@ -326,6 +331,69 @@ TEST(Rigid, FastSphereDoesNotTunnelThroughAThinBox) {
     // It stops at the wall's face: its centre never past 4.995 - 0.025 by more than the soft
     // contact's push-back allows (the linear slop, 5 mm), let alone through the wall.
     EXPECT_LT(furthest, 4.995f - 0.025f + 0.005f) << speed << " m/s";
+  }
+}
+
+// Sleeping: a box at rest falls asleep once it has been still for timeToSleep, and stays put.
+TEST(Rigid, BoxAtRestFallsAsleepAndStaysPut) {
+  World world = groundWorld();
+  BodyDef d;
+  d.position = {0, 0.6f, 0};
+  const Handle h = world.bodies().add(d);
+  run(world, 30);
+  EXPECT_FALSE(world.bodies().asleep(h));  // still settling after 0.1 m
+  run(world, 90);                          // 2 s in all: settled, and still for 0.5 s
+  ASSERT_TRUE(world.bodies().asleep(h));
+  EXPECT_EQ(world.bodies().awakeCount(), 0u);
+  const Vec3f at = world.bodies().position(h);
+  run(world, 60);
+  EXPECT_EQ(world.bodies().position(h), at);  // not moved at all: no solve, no integration
+  EXPECT_EQ(world.bodies().velocity(h), Vec3f::Zero());
+  EXPECT_EQ(world.bodies().manifoldCount(), 0u);  // and no contacts made
+}
+
+// A sleeping stack wakes when an awake body lands on it, when it is pushed, and when a body
+// under it is removed.
+TEST(Rigid, SleepingStackWakesOnContactImpulseAndRemoval) {
+  const auto sleepingStack = [](World& world, std::vector<Handle>& hs) {
+    for (int i = 0; i < 3; ++i) {
+      BodyDef d;
+      d.position = {0, 0.5f + float(i), 0};
+      hs.push_back(world.bodies().add(d));
+    }
+    run(world, 180);
+    for (const Handle h : hs) ASSERT_TRUE(world.bodies().asleep(h));
+  };
+  {  // a sphere dropped on it
+    World world = groundWorld();
+    std::vector<Handle> hs;
+    sleepingStack(world, hs);
+    BodyDef ball;
+    ball.shape = BodyShape::kSphere, ball.radius = 0.2f, ball.position = {0, 4, 0};
+    world.bodies().add(ball);
+    bool woke = false;
+    for (int i = 0; i < 60 && !woke; ++i) {
+      world.step();
+      woke = !world.bodies().asleep(hs[0]);  // the whole island wakes, the bottom too
+    }
+    EXPECT_TRUE(woke);
+  }
+  {  // a push on the top box
+    World world = groundWorld();
+    std::vector<Handle> hs;
+    sleepingStack(world, hs);
+    world.bodies().applyImpulse(hs[2], {1, 0, 0}, world.bodies().position(hs[2]));
+    EXPECT_FALSE(world.bodies().asleep(hs[0]));
+    run(world, 30);
+    EXPECT_GT(world.bodies().position(hs[2]).x(), 0.05f);  // 1 m/s, slowed by friction
+  }
+  {  // the middle box removed: the top one falls onto the bottom one
+    World world = groundWorld();
+    std::vector<Handle> hs;
+    sleepingStack(world, hs);
+    world.bodies().remove(hs[1]);
+    run(world, 120);
+    EXPECT_NEAR(world.bodies().position(hs[2]).y(), 1.5f, 0.01f);
   }
 }
 

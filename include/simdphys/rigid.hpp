@@ -89,6 +89,12 @@ struct RigidSettings {
   float restitutionThreshold = 1.0f;   // m/s: slower impacts do not bounce
   float linearDamping = 0.0f, angularDamping = 0.0f;  // 1/s, >= 0
   bool warmStarting = true;
+  // Sleeping (Box2D's): an island (bodies joined by contacts) whose bodies have all moved slower
+  // than sleepSpeed (m/s, the angular speed times the body's reach counted too) for timeToSleep
+  // (s) sleeps: it is neither solved nor moved, costs no contacts among its bodies, and wakes
+  // when an awake body touches it, or when a body of it is set, pushed or removed.
+  bool sleeping = true;
+  float sleepSpeed = 0.05f, timeToSleep = 0.5f;
 };
 
 // Throws Error naming `where` and the field if a setting is out of range or not finite.
@@ -118,6 +124,8 @@ class RigidBodies : public StreamSet<fields::Body> {
   Vec3f velocity(Handle body) const;
   Vec3f angularVelocity(Handle body) const;
   bool kinematic(Handle body) const;
+  bool asleep(Handle body) const;
+  std::size_t awakeCount() const;
   // The body's shape where it is now.
   Obb box(Handle body) const;        // throws Error if it is a sphere
   Sphere sphere(Handle body) const;  // throws Error if it is a box
@@ -153,6 +161,8 @@ class RigidBodies : public StreamSet<fields::Body> {
   std::uint32_t require(Handle body, const char* where) const;
   Vec3f loadVec(std::size_t field, std::size_t i) const;
   void storeVec(std::size_t field, std::size_t i, const Vec3f& v);
+  // Wakes body i's island, if asleep.
+  void wake(std::uint32_t i);
 
   RigidSettings settings_;
   HandleTable handles_;

@@ -94,12 +94,13 @@ struct Particle {
 // Rigid bodies (rigid.hpp): position, orientation (quaternion x, y, z, w), linear and angular
 // velocity, inverse mass and the inverse inertia about the body's own axes, the shape (kind
 // 0 sphere, 1 box; ex, ey, ez the box's half extents, ex the sphere's radius), friction,
-// restitution, and the force and torque held on it. Padding: zeros, inverse mass 0, which no step
-// moves.
+// restitution, the force and torque held on it, and its sleep: the time it has been still (s)
+// and, while asleep, its island's id + 1 (0: awake; exact as a float below 2^24 bodies).
+// Padding: zeros, inverse mass 0, which no step moves.
 struct Body {
   enum : std::size_t {
     x, y, z, qx, qy, qz, qw, vx, vy, vz, wx, wy, wz, invMass, invIx, invIy, invIz,
-    shape, ex, ey, ez, friction, restitution, fx, fy, fz, tx, ty, tz, kCount
+    shape, ex, ey, ez, friction, restitution, fx, fy, fz, tx, ty, tz, sleepTime, island, kCount
   };
   static constexpr float kPad[kCount] = {};
 };

@@ -47,6 +47,8 @@ void validate(const RigidSettings& s, const std::string& where) {
   nonNegative(s.restitutionThreshold, "restitutionThreshold");
   nonNegative(s.linearDamping, "linearDamping");
   nonNegative(s.angularDamping, "angularDamping");
+  nonNegative(s.sleepSpeed, "sleepSpeed");
+  nonNegative(s.timeToSleep, "timeToSleep");
 }
 
 RigidBodies::RigidBodies(const RigidSettings& settings) {
@@ -128,12 +130,34 @@ Handle RigidBodies::add(const BodyDef& d) {
           d.velocity.x(), d.velocity.y(), d.velocity.z(), d.angularVelocity.x(),
           d.angularVelocity.y(), d.angularVelocity.z(), invMass, invInertia.x(), invInertia.y(),
           invInertia.z(), float(shape), half.x(), half.y(), half.z(), d.friction, d.restitution,
-          0, 0, 0, 0, 0, 0});
+          0, 0, 0, 0, 0, 0, 0, 0});
   return handles_.add();
 }
 
 void RigidBodies::remove(Handle h) {
+  const std::uint32_t i = require(h, "RigidBodies::remove");
+  wake(i);  // what it held up falls
   eraseSwap(handles_.remove(h, "RigidBodies::remove", "body"));
+}
+
+void RigidBodies::wake(std::uint32_t i) {
+  const float island = value(F::Body::island, i);
+  if (island == 0) return;
+  for (std::size_t j = 0; j < size(); ++j)
+    if (value(F::Body::island, j) == island) {
+      paddedData(F::Body::island)[j] = 0;
+      paddedData(F::Body::sleepTime)[j] = 0;
+    }
+}
+
+bool RigidBodies::asleep(Handle h) const {
+  return value(F::Body::island, require(h, "RigidBodies::asleep")) != 0;
+}
+
+std::size_t RigidBodies::awakeCount() const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < size(); ++i) n += value(F::Body::island, i) == 0 ? 1 : 0;
+  return n;
 }
 
 Vec3f RigidBodies::position(Handle h) const { return loadVec(F::Body::x, require(h, "RigidBodies::position")); }
@@ -166,12 +190,14 @@ Sphere RigidBodies::sphere(Handle h) const {
 
 void RigidBodies::setPosition(Handle h, const Vec3f& p) {
   const std::uint32_t i = require(h, "RigidBodies::setPosition");
+  wake(i);
   detail::requireFiniteField(p, "RigidBodies::setPosition", "position");
   storeVec(F::Body::x, i, p);
 }
 
 void RigidBodies::setOrientation(Handle h, const Quatf& q) {
   const std::uint32_t i = require(h, "RigidBodies::setOrientation");
+  wake(i);
   requireOrientation(q, "RigidBodies::setOrientation");
   const Quatf u = q.normalized();
   storeVec(F::Body::qx, i, u.vec());
@@ -180,12 +206,14 @@ void RigidBodies::setOrientation(Handle h, const Quatf& q) {
 
 void RigidBodies::setVelocity(Handle h, const Vec3f& v) {
   const std::uint32_t i = require(h, "RigidBodies::setVelocity");
+  wake(i);
   detail::requireFiniteField(v, "RigidBodies::setVelocity", "velocity");
   storeVec(F::Body::vx, i, v);
 }
 
 void RigidBodies::setAngularVelocity(Handle h, const Vec3f& w) {
   const std::uint32_t i = require(h, "RigidBodies::setAngularVelocity");
+  wake(i);
   detail::requireFiniteField(w, "RigidBodies::setAngularVelocity", "angularVelocity");
   storeVec(F::Body::wx, i, w);
 }
@@ -204,18 +232,21 @@ void RigidBodies::applyImpulse(Handle h, const Vec3f& impulse, const Vec3f& poin
                   invInertia * (point - loadVec(F::Body::x, i)).cross(impulse);
   detail::requireFiniteField(v, where, "resulting velocity");
   detail::requireFiniteField(w, where, "resulting angular velocity");
+  wake(i);
   storeVec(F::Body::vx, i, v);
   storeVec(F::Body::wx, i, w);
 }
 
 void RigidBodies::setForce(Handle h, const Vec3f& f) {
   const std::uint32_t i = require(h, "RigidBodies::setForce");
+  wake(i);
   detail::requireFiniteField(f, "RigidBodies::setForce", "force");
   storeVec(F::Body::fx, i, f);
 }
 
 void RigidBodies::setTorque(Handle h, const Vec3f& t) {
   const std::uint32_t i = require(h, "RigidBodies::setTorque");
+  wake(i);
   detail::requireFiniteField(t, "RigidBodies::setTorque", "torque");
   storeVec(F::Body::tx, i, t);
 }

@@ -30,6 +30,8 @@ std::vector<detail::BodyT<T>> Internals::load(const RigidBodies& r) {
     b.restitution = T(r.value(F::Body::restitution, i));
     b.force = vec(F::Body::fx, i), b.torque = vec(F::Body::tx, i);
     b.kinematic = b.invMass == 0;
+    b.sleepTime = T(r.value(F::Body::sleepTime, i));
+    b.island = std::uint32_t(r.value(F::Body::island, i));
   }
   return out;
 }
@@ -43,6 +45,8 @@ void Internals::store(RigidBodies& r, const std::vector<detail::BodyT<T>>& state
     r.storeVec(F::Body::wx, i, b.w.template cast<float>());
     r.storeVec(F::Body::qx, i, b.q.vec().template cast<float>());
     r.paddedData(F::Body::qw)[i] = float(b.q.w());
+    r.paddedData(F::Body::sleepTime)[i] = float(b.sleepTime);
+    r.paddedData(F::Body::island)[i] = float(b.island);
   }
 }
 

@@ -23,6 +23,8 @@ struct BodyT {
   T friction, restitution;
   Vec3<T> force, torque;
   bool kinematic;
+  T sleepTime;
+  std::uint32_t island;  // while asleep, its island's id + 1; 0 awake
 
   ObbT<T> box() const { return {x, half, q.toRotationMatrix()}; }
   SphereT<T> sphere() const { return {x, half.x()}; }

@@ -173,6 +173,7 @@ std::vector<ContactConstraintT<T>> findContacts(const std::vector<BodyT<T>>& bod
   keyed.reserve(pairs.size());
   for (const Pair& p : pairs) {
     if (bodies[p.a].invMass == 0 && bodies[p.b].invMass == 0) continue;
+    if (bodies[p.a].island != 0 && bodies[p.b].island != 0) continue;  // both asleep
     // A is the body of the lower slot, so the pair keeps its order (and ids) as indices move.
     const Pair ordered = slots[p.a] < slots[p.b] ? p : Pair{p.b, p.a};
     keyed.push_back({pairKey(slots[ordered.a], slots[ordered.b]), ordered});
@@ -193,7 +194,8 @@ std::vector<ContactConstraintT<T>> findContacts(const std::vector<BodyT<T>>& bod
   }
   const std::span<const ObstacleShape> shapes = obstacles.shapes();
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (bodies[i].invMass == 0) continue;  // kinematic bodies pass through obstacles
+    // Kinematic bodies pass through obstacles; sleeping ones rest where they are.
+    if (bodies[i].invMass == 0 || bodies[i].island != 0) continue;
     for (std::uint32_t o = 0; o < shapes.size(); ++o) {
       if (!mayTouch(shapes[o], boxes[i])) continue;
       const ManifoldT<T> m =

@@ -62,7 +62,7 @@ void integrateVelocities(const std::vector<BodyT<T>>& bodies, std::vector<Solver
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const BodyT<T>& b = bodies[i];
     SolverBodyT<T>& sb = solver[i];
-    if (b.invMass == 0) continue;
+    if (sb.invMass == 0) continue;  // kinematic or asleep
     sb.v = linear * (sb.v + h * (g + b.invMass * b.force));
     sb.w = angular * (sb.w + h * (sb.invInertia * b.torque));
   }
@@ -87,7 +87,7 @@ void integratePositions(const std::vector<BodyT<T>>& bodies, std::vector<SolverB
     const BodyT<T>& body = bodies[i];
     SolverBodyT<T>& b = solver[i];
     b.dp += h * b.v;
-    if (body.invMass == 0) {
+    if (b.invMass == 0) {
       b.dq = turned(b.dq, Vec3<T>(h * b.w));
       continue;
     }
@@ -100,6 +100,61 @@ void integratePositions(const std::vector<BodyT<T>>& bodies, std::vector<SolverB
     b.dq = turned(b.dq, Vec3<T>(h * mid));
     b.w = rate(b.dq * body.q, L);
   }
+}
+
+// Sleeping: islands of awake bodies still for timeToSleep fall asleep; sleeping islands an awake
+// body touched wake (for the next step: their own contacts were not made in this one).
+template <class T>
+void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> slots,
+                 const std::vector<ContactConstraintT<T>>& contacts, const RigidSettings& s, T dt) {
+  const std::size_t n = bodies.size();
+  const auto awakeDynamic = [&](std::uint32_t i) {
+    return i < n && bodies[i].invMass > 0 && bodies[i].island == 0;
+  };
+  std::vector<std::uint32_t> wake;
+  for (const ContactConstraintT<T>& c : contacts)
+    if (c.b < n && (bodies[c.a].island == 0) != (bodies[c.b].island == 0)) {
+      const std::uint32_t sleeper = bodies[c.a].island != 0 ? c.a : c.b;
+      const std::uint32_t other = sleeper == c.a ? c.b : c.a;
+      if (bodies[other].invMass > 0 || bodies[other].v.squaredNorm() > 0 ||
+          bodies[other].w.squaredNorm() > 0)
+        wake.push_back(bodies[sleeper].island);
+    }
+  // Still or not, by the speed of the body's fastest point (its reach times the angular speed).
+  const T tolerance = T(s.sleepSpeed);
+  for (std::size_t i = 0; i < n; ++i) {
+    BodyT<T>& b = bodies[i];
+    if (!awakeDynamic(std::uint32_t(i))) continue;
+    const T reach = b.shape == BodyShape::kSphere ? b.half.x() : b.half.norm();
+    const bool still = b.v.norm() + reach * b.w.norm() <= tolerance &&
+                       b.force.squaredNorm() == 0 && b.torque.squaredNorm() == 0;
+    b.sleepTime = still ? b.sleepTime + dt : T(0);
+  }
+  // Islands of awake dynamic bodies joined by contacts (union-find), each the stillness of its
+  // least still body.
+  std::vector<std::uint32_t> parent(n);
+  for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+  const auto find = [&](std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const ContactConstraintT<T>& c : contacts)
+    if (awakeDynamic(c.a) && awakeDynamic(c.b)) {
+      const std::uint32_t ra = find(c.a), rb = find(c.b);
+      if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+    }
+  std::vector<T> least(n, std::numeric_limits<T>::infinity());
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (awakeDynamic(i)) least[find(i)] = std::min(least[find(i)], bodies[i].sleepTime);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (awakeDynamic(i) && least[find(i)] >= T(s.timeToSleep)) {
+      BodyT<T>& b = bodies[i];
+      b.island = slots[find(i)] + 1;  // the id outlives index changes
+      b.v.setZero(), b.w.setZero();
+    }
+  for (BodyT<T>& b : bodies)
+    if (b.island != 0 && std::find(wake.begin(), wake.end(), b.island) != wake.end())
+      b.island = 0, b.sleepTime = 0;
 }
 
 // One step of dt: bodies (their positions, orientations and velocities) move; `cache` holds
@@ -124,6 +179,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   const std::size_t n = bodies.size();
   std::vector<SolverBodyT<T>> solver(n + 1);  // the last: the static dummy of obstacle contacts
   for (std::size_t i = 0; i < n; ++i) {
+    if (bodies[i].island != 0) continue;  // asleep: held still, as the static dummy is
     const Mat3<T> R = bodies[i].q.toRotationMatrix();
     solver[i].v = bodies[i].v, solver[i].w = bodies[i].w, solver[i].invMass = bodies[i].invMass;
     solver[i].invInertia = R * bodies[i].invInertia.asDiagonal() * R.transpose();
@@ -157,6 +213,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
     b.q = (solver[i].dq * b.q).normalized();
     b.v = solver[i].v, b.w = solver[i].w;
   }
+  if (s.sleeping) updateSleep(bodies, slots, contacts, s, dt);
   keepImpulses(contacts, cache);
   return stats;
 }
