@@ -18,6 +18,7 @@ void registerOverlap3dBenchmarks();
 void registerGeometry2dBenchmarks();
 void registerParticleBenchmarks();
 void registerClothBenchmarks();
+void registerRigidBenchmarks();
 }  // namespace simdphys::bench
 
 namespace {
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
   bench::registerGeometry2dBenchmarks();
   bench::registerParticleBenchmarks();
   bench::registerClothBenchmarks();
+  bench::registerRigidBenchmarks();
 #ifdef SIMDPHYS_HAVE_BULLET
   bench::registerBulletBenchmarks();
 #endif

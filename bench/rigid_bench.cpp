@@ -1,0 +1,122 @@
+// W5 `pyramid` (WORKLOADS.md): the square pyramid of unit boxes, 600 frames (one an iteration),
+// with W5's measures (bench_common's pyramidCounters, shared with the peers) and the error
+// against the same pyramid stepped by the double reference. The contact models at their defaults
+// and over their substeps and iterations, for the speed-against-error plot. The rigid step runs
+// the scalar reference on every path for now (the wide kernel is to come: docs/rigid.md), so it
+// is registered once, labelled "reference". Bullet and ODE run in peers/*_pyramid_bench.cpp.
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "bench/bench_common.hpp"
+#include "pyramid.hpp"
+#include "simdphys/world.hpp"
+#include "testing/cloth.hpp"
+#include "testing/rigid.hpp"
+
+namespace simdphys::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Model {
+  std::string name;
+  RigidSettings settings;
+  bool withError;  // run the double reference too (about 40 ms a frame at B = 10)
+};
+
+World pyramidWorld(const Model& m, int base, std::vector<Handle>& handles) {
+  World world(WorldSettings{workloads::kPyramidFrameTime, 1, 1});
+  RigidSettings s = m.settings;
+  s.gravity = workloads::kPyramidGravity;
+  s.sleeping = false;  // W5: no sleeping or deactivation
+  world.bodies().setSettings(s);
+  world.obstacles().add(workloads::kPyramidGround);
+  for (const Vec3f& p : workloads::pyramidCenters(base)) {
+    BodyDef d;
+    d.position = p, d.halfExtents = Vec3f::Constant(workloads::kPyramidHalf);
+    d.mass = workloads::kPyramidMass, d.friction = workloads::kPyramidFriction;
+    d.restitution = workloads::kPyramidRestitution;
+    handles.push_back(world.bodies().add(d));
+  }
+  return world;
+}
+
+// The model's pyramid stepped by the double reference: the boxes' centres at the end.
+const std::vector<Vec3d>& doubleRun(const Model& m, int base) {
+  static std::map<std::pair<std::string, int>, std::vector<Vec3d>> cache;
+  std::vector<Vec3d>& r = cache[{m.name, base}];
+  if (r.empty()) {
+    std::vector<Handle> handles;
+    World world = pyramidWorld(m, base, handles);
+    test::BodiesD d(world.bodies());
+    for (int f = 0; f < workloads::kPyramidFrames; ++f) d.step(world);
+    r = d.positions();
+  }
+  return r;
+}
+
+void pyramidRun(benchmark::State& state, const Model& m, int base) {
+  const std::vector<Vec3d>* exact = m.withError ? &doubleRun(m, base) : nullptr;
+  std::vector<Handle> handles;
+  World world = pyramidWorld(m, base, handles);
+  const std::vector<Vec3f> start = workloads::pyramidCenters(base);
+  double seconds = 0, deepest = 0;
+  for (auto _ : state) {
+    const auto t0 = Clock::now();
+    world.step();
+    seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+    deepest = std::max(deepest, double(world.bodies().deepestPenetration()));
+  }
+  std::vector<Vec3f> end;
+  for (const Handle h : handles) end.push_back(world.bodies().position(h));
+  pyramidCounters(state, start, end, int(state.iterations()), seconds, deepest);
+  state.counters["substeps"] = m.settings.substeps;
+  state.counters["iterations"] = m.settings.iterations;
+  if (exact) {
+    const test::PositionError e = test::positionError(end, *exact);
+    state.counters["error_max"] = e.max;
+    state.counters["error_rms"] = e.rms;
+  }
+}
+
+Model model(ContactModel kind, int substeps, int iterations, bool withError = false) {
+  Model m{kind == ContactModel::kSoftStep    ? "soft_step"
+          : kind == ContactModel::kBaumgarte ? "baumgarte"
+                                             : "projection",
+          {}, withError};
+  m.settings.model = kind, m.settings.substeps = substeps, m.settings.iterations = iterations;
+  m.name += "_s" + std::to_string(substeps) + "_i" + std::to_string(iterations);
+  return m;
+}
+
+}  // namespace
+
+void registerRigidBenchmarks() {
+  const auto run = [](Model m, int base) {
+    return [m, base](benchmark::State& state) { pyramidRun(state, m, base); };
+  };
+  const std::int64_t frames = workloads::kPyramidFrames;
+  // The defaults (soft step, 4 substeps, 1 iteration) and each model's usual setting, at both
+  // sizes, with the error against the double reference at B = 10.
+  const Model defaults[] = {model(ContactModel::kSoftStep, 4, 1, true),
+                            model(ContactModel::kBaumgarte, 1, 10, true),
+                            model(ContactModel::kProjection, 1, 10, true)};
+  for (const int base : workloads::kPyramidBases)
+    for (Model m : defaults) {
+      m.withError = m.withError && base == 10;
+      registerOnce("pyramid", m.name, "reference", std::size_t(base), run(m, base), frames);
+    }
+  // Speed against error at B = 10: each model over its substeps or iterations.
+  for (const int substeps : {1, 2, 8})
+    registerOnce("pyramid", model(ContactModel::kSoftStep, substeps, 1).name, "reference", 10,
+                 run(model(ContactModel::kSoftStep, substeps, 1), 10), frames);
+  for (const int iterations : {4, 20})
+    for (const ContactModel kind : {ContactModel::kBaumgarte, ContactModel::kProjection})
+      registerOnce("pyramid", model(kind, 1, iterations).name, "reference", 10,
+                   run(model(kind, 1, iterations), 10), frames);
+}
+
+}  // namespace simdphys::bench
