@@ -174,6 +174,19 @@ SECTIONS = [
      "by the stability bound). error: the largest distance from the same cloth stepped by the "
      "double-precision reference, after 10 frames and at the end. The plot sets the mean "
      "stretch against the time of a frame."),
+    ("W5 pyramid: a square pyramid of unit boxes", ["pyramid"], "pyramid",
+     "A pyramid of unit boxes (base B = 10: 385 boxes, B = 20: 2,870; mass 1, friction 0.6, "
+     "no restitution, no sleeping) on a ground box, 600 frames at 60 Hz, one iteration a frame. "
+     "At the end: the largest displacement of any box from its start (a stable solver keeps it "
+     "below 0.05) and whether every box is within 0.5 of its start; over every frame the "
+     "deepest penetration of any contact, by the engine's own measure. simdphys runs its rigid "
+     "step on the scalar reference (the wide kernel is to come): soft_step_s<k>_i<i> is the "
+     "soft step (60 Hz contacts) with k substeps and i iterations, the default k = 6; "
+     "baumgarte and projection the rigid models over their iterations. error: the largest and "
+     "RMS distance of a box from the same pyramid stepped by the double-precision reference "
+     "(B = 10, the three models' usual settings). Peers: Bullet's sequential impulses "
+     "(10 iterations) and ODE's QuickStep (20 iterations) at its defaults and at its stacking "
+     "settings. The plot sets the displacement and the penetration against the time of a frame."),
     ("Integrators: error against cost on closed forms",
      ["integrate_projectile", "integrate_oscillator"], "integrators",
      "The four integrators at time steps 1/30 to 1/480 s. projectile: 10,000 particles thrown "
@@ -547,8 +560,82 @@ def cloth_plot(runs, tasks, title, filename):
     return True
 
 
+def pyramid_runs(runs):
+    """The W5 runs that finished, by B, peers last, then method."""
+    return sorted((r for r in runs.values() if r.task == "pyramid" and r.ms and not r.error),
+                  key=lambda r: (r.n, r.path == "peer", r.method))
+
+
+def pyramid_table(runs, tasks, markdown):
+    """Per run: ms a frame, body steps a second, displacement, penetration, standing, error."""
+    head = ["method", "path", "B", "ms/frame", "body steps/s", "largest displacement",
+            "deepest penetration", "standing", "error max / rms"]
+    body = []
+    for r in pyramid_runs(runs):
+        c = r.counters
+        err = (f"{c['error_max']:.2g} / {c['error_rms']:.2g}" if "error_max" in c else "-")
+        body.append([r.method, r.path, f"{r.n}", f"{r.ms:.3g}",
+                     eng(c.get("body_steps_per_s", 0), "steps/s"),
+                     f"{c.get('max_displacement', 0):.3g}", f"{c.get('deepest_penetration', 0):.3g}",
+                     "yes" if c.get("standing", 0) == 1 else "NO", err])
+    return small_table(head, body, 3, markdown) if body else ""
+
+
+def pyramid_family(method):
+    """The series of a simdphys W5 run: a model over its substeps or iterations."""
+    m = re.fullmatch(r"(soft_step|baumgarte|projection)_s(\d+)_i(\d+)", method)
+    return m.group(1) if m else None
+
+
+def pyramid_plot(runs, tasks, title, filename):
+    """Largest displacement and deepest penetration against ms a frame (log-log), a column per
+    B: simdphys's models as lines over their substeps or iterations, peers as grey points."""
+    rs = pyramid_runs(runs)
+    ns = sorted({r.n for r in rs})
+    if not ns:
+        return False
+    measures = [("max_displacement", "largest displacement at the end (m)"),
+                ("deepest_penetration", "deepest penetration, any frame (m)")]
+    fig, axes = plt.subplots(2, len(ns), figsize=(7 * len(ns), 9), squeeze=False)
+    for col, n in enumerate(ns):
+        mine = [r for r in rs if r.n == n]
+        for row, (key, label) in enumerate(measures):
+            ax = axes[row][col]
+            families = {}
+            for r in mine:
+                if r.path != "peer" and pyramid_family(r.method):
+                    families.setdefault(pyramid_family(r.method), []).append(r)
+            for f, pts in sorted(families.items()):
+                pts.sort(key=lambda r: r.ms)
+                ax.plot([r.ms for r in pts], [max(r.counters.get(key, 0), 1e-6) for r in pts],
+                        marker="o", label=f"simdphys {f} ({pts[0].path})")
+                for r in pts:
+                    k = r.counters.get("substeps" if f == "soft_step" else "iterations", 0)
+                    ax.annotate(f"{k:.0f}", (r.ms, max(r.counters.get(key, 0), 1e-6)), fontsize=7,
+                                xytext=(3, -9), textcoords="offset points")
+            for r in mine:
+                if r.path == "peer":
+                    y = max(r.counters.get(key, 0), 1e-6)
+                    ax.plot([r.ms], [y], marker="s", color="grey", linestyle="none")
+                    ax.annotate(r.method, (r.ms, y), fontsize=7, xytext=(3, 3),
+                                textcoords="offset points")
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_title(f"B = {n} (numbers: substeps, or iterations)", fontsize=10)
+            ax.set_xlabel("ms a frame, one thread (lower is faster)", fontsize=9)
+            ax.set_ylabel(label, fontsize=9)
+            ax.grid(alpha=0.3, which="both")
+            ax.legend(fontsize=8, loc="lower left")
+    fig.suptitle(title, x=0.02, ha="left", fontsize=11)
+    fig.tight_layout(rect=(0, 0, 1, 0.96))
+    fig.savefig(filename, dpi=100)
+    plt.close(fig)
+    return True
+
+
 # Sections drawn by their own table and plot (by image name) rather than the generic ones.
-CUSTOM = {"integrators": (integrator_table, integrator_plot), "cloth": (cloth_table, cloth_plot)}
+CUSTOM = {"integrators": (integrator_table, integrator_plot), "cloth": (cloth_table, cloth_plot),
+          "pyramid": (pyramid_table, pyramid_plot)}
 
 
 def section_table(image, runs, tasks, markdown):
