@@ -1,12 +1,14 @@
 // W5 `pyramid` (WORKLOADS.md): the square pyramid of unit boxes, 600 frames (one an iteration),
 // with W5's measures (bench_common's pyramidCounters, shared with the peers) and the error
 // against the same pyramid stepped by the double reference. The contact models at their defaults
-// and over their substeps and iterations, for the speed-against-error plot. The rigid step runs
-// the scalar reference on every path for now (the wide kernel is to come: docs/rigid.md), so it
-// is registered once, labelled "reference". Bullet and ODE run in peers/*_pyramid_bench.cpp.
+// and over their substeps and iterations, for the speed-against-error plot. The defaults run on
+// every path (the contact passes as lane-wide kernels, simd/rigid.cpp) and as the kernels'
+// plain loops ("autovec"); the sweeps on the reference path. Bullet and ODE run in
+// peers/*_pyramid_bench.cpp.
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "pyramid.hpp"
 #include "simdphys/world.hpp"
 #include "testing/cloth.hpp"
+#include "testing/plain_loops.hpp"
 #include "testing/rigid.hpp"
 
 namespace simdphys::bench {
@@ -25,6 +28,7 @@ struct Model {
   std::string name;
   RigidSettings settings;
   bool withError;  // run the double reference too (about 40 ms a frame at B = 10)
+  bool onReference = false;  // on the reference path (registered once, labelled so)
 };
 
 World pyramidWorld(const Model& m, int base, std::vector<Handle>& handles) {
@@ -58,8 +62,12 @@ const std::vector<Vec3d>& doubleRun(const Model& m, int base) {
   return r;
 }
 
-void pyramidRun(benchmark::State& state, const Model& m, int base) {
+void pyramidRun(benchmark::State& state, const Model& m, int base, bool plainLoops) {
   const std::vector<Vec3d>* exact = m.withError ? &doubleRun(m, base) : nullptr;
+  std::optional<test::ScopedPlainLoops> plain;
+  if (plainLoops) plain.emplace();
+  std::optional<ScopedPath> path;
+  if (m.onReference) path.emplace("reference");
   std::vector<Handle> handles;
   World world = pyramidWorld(m, base, handles);
   const std::vector<Vec3f> start = workloads::pyramidCenters(base);
@@ -82,11 +90,12 @@ void pyramidRun(benchmark::State& state, const Model& m, int base) {
   }
 }
 
-Model model(ContactModel kind, int substeps, int iterations, bool withError = false) {
+Model model(ContactModel kind, int substeps, int iterations, bool withError = false,
+            bool onReference = true) {
   Model m{kind == ContactModel::kSoftStep    ? "soft_step"
           : kind == ContactModel::kBaumgarte ? "baumgarte"
                                              : "projection",
-          {}, withError};
+          {}, withError, onReference};
   m.settings.model = kind, m.settings.substeps = substeps, m.settings.iterations = iterations;
   m.name += "_s" + std::to_string(substeps) + "_i" + std::to_string(iterations);
   return m;
@@ -95,21 +104,28 @@ Model model(ContactModel kind, int substeps, int iterations, bool withError = fa
 }  // namespace
 
 void registerRigidBenchmarks() {
-  const auto run = [](Model m, int base) {
-    return [m, base](benchmark::State& state) { pyramidRun(state, m, base); };
+  const auto run = [](Model m, int base, bool plain = false) {
+    return [m, base, plain](benchmark::State& state) { pyramidRun(state, m, base, plain); };
   };
   const std::int64_t frames = workloads::kPyramidFrames;
-  // The defaults (soft step, 6 substeps, 1 iteration) and each model's usual setting, at both
-  // sizes, with the error against the double reference at B = 10.
-  const Model defaults[] = {model(ContactModel::kSoftStep, RigidSettings{}.substeps, 1, true),
-                            model(ContactModel::kBaumgarte, 1, 10, true),
-                            model(ContactModel::kProjection, 1, 10, true)};
-  for (const int base : workloads::kPyramidBases)
-    for (Model m : defaults) {
-      m.withError = m.withError && base == 10;
-      registerOnce("pyramid", m.name, "reference", std::size_t(base), run(m, base), frames);
+  // The defaults (soft step, 6 substeps, 1 iteration) on every path and as plain loops, and the
+  // other models at their usual settings, at both sizes, with the error against the double
+  // reference at B = 10.
+  const Model soft = model(ContactModel::kSoftStep, RigidSettings{}.substeps, 1, true, false);
+  const Model others[] = {model(ContactModel::kBaumgarte, 1, 10, true),
+                          model(ContactModel::kProjection, 1, 10, true)};
+  for (const int base : workloads::kPyramidBases) {
+    const auto n = std::size_t(base);
+    Model m = soft;
+    m.withError = base == 10;
+    registerPerPath("pyramid", m.name, n, run(m, base), true, frames);
+    registerBestPath("pyramid", "autovec", n, run(m, base, true), frames);
+    for (Model o : others) {
+      o.withError = base == 10;
+      registerOnce("pyramid", o.name, "reference", n, run(o, base), frames);
     }
-  // Speed against error at B = 10: each model over its substeps or iterations.
+  }
+  // Speed against error at B = 10: each model over its substeps or iterations, on the reference.
   for (const int substeps : {2, 4, 8, 12})
     registerOnce("pyramid", model(ContactModel::kSoftStep, substeps, 1).name, "reference", 10,
                  run(model(ContactModel::kSoftStep, substeps, 1), 10), frames);

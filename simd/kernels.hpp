@@ -19,6 +19,7 @@
 
 #include "core/cloth_step.hpp"
 #include "core/particle_step.hpp"
+#include "core/rigid_solve.hpp"
 #include "core/view.hpp"
 #include "simdphys/core.hpp"
 #include "simdphys/stream_fields.hpp"
@@ -337,5 +338,17 @@ struct ClothStepInput {
   int threads;  // OpenMP threads (1: none); the result does not depend on it
 };
 extern const Kernel<void(const ClothStepInput&)> stepCloth, stepClothAutovec;
+
+// ---- rigid bodies (simd/rigid.cpp) -----------------------------------------------------------
+// The contact passes of a substep over the rows, batch after batch (each batch's lanes share no
+// moving body), moving the bodies' velocities: warm starting (the accumulated impulses applied),
+// a solve pass (normal impulses with the pass's bias, then friction), and restitution. They
+// follow the reference's arithmetic (src/reference/rigid/solver-inl.hpp) lane-wide.
+extern const Kernel<void(const core::ContactRows&, core::SolverBody*)> warmStartContacts,
+    warmStartContactsAutovec;
+extern const Kernel<void(const core::ContactRows&, core::SolverBody*, const core::ContactPass&)>
+    solveContacts, solveContactsAutovec;
+extern const Kernel<void(const core::ContactRows&, core::SolverBody*, float threshold)>
+    restituteContacts, restituteContactsAutovec;
 
 }  // namespace simdphys::simd

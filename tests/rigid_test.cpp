@@ -1,8 +1,9 @@
 // Rigid bodies (rigid.hpp) by their physics against closed forms: a sphere's bounces in the ratio
 // of restitution squared, a box held or sliding on a 30-degree ramp by Coulomb friction, a free
-// spinning box keeping its angular momentum, momentum in a head-on collision, stacks and W5's
-// pyramid standing, a fast sphere stopped by a thin box; and bodies added and removed mid-run,
-// and bad input. The manifolds are rigid_manifold_test.
+// spinning box keeping its angular momentum, momentum in a head-on collision, stacks standing, a
+// fast sphere stopped by a thin box, sleeping; and bodies added and removed mid-run, and bad
+// input. The manifolds are rigid_manifold_test, the kernels and W5 on every path
+// rigid_kernel_test.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -250,36 +251,6 @@ TEST(Rigid, BoxDroppedOnItsCornerComesToRestOnAFace) {
   EXPECT_NEAR(world.bodies().position(h).y(), 0.5f, 0.005f);
   const Mat3f R = world.bodies().orientation(h).toRotationMatrix();
   EXPECT_GT(R.row(1).cwiseAbs().maxCoeff(), std::cos(0.5f * std::numbers::pi_v<float> / 180));
-}
-
-// W5 at B = 10 for its first 2 s, in which the pyramid settles (its largest displacement is
-// reached by then: docs/rigid.md), at simdphys's defaults.
-TEST(Rigid, PyramidOfW5Stands) {
-  World world;
-  RigidSettings settings;
-  settings.sleeping = false;  // W5: no sleeping
-  world.bodies().setSettings(settings);
-  world.obstacles().add(workloads::kPyramidGround);
-  const std::vector<Vec3f> start = workloads::pyramidCenters(10);
-  std::vector<Handle> hs;
-  for (const Vec3f& p : start) {
-    BodyDef d;
-    d.position = p, d.friction = workloads::kPyramidFriction;
-    hs.push_back(world.bodies().add(d));
-  }
-  float deepest = 0;
-  for (int f = 0; f < 120; ++f) {
-    world.step();
-    deepest = std::max(deepest, world.bodies().deepestPenetration());
-  }
-  std::vector<Vec3f> end;
-  for (Handle h : hs) end.push_back(world.bodies().position(h));
-  const workloads::PyramidMeasures m = workloads::measurePyramid(start, end);
-  EXPECT_TRUE(m.standing);
-  // W5's bars (Jolt's figures at B = 10): displacement 0.0025, and the 0.005 for the
-  // deepest penetration.
-  EXPECT_LT(m.maxDisplacement, 0.0025);
-  EXPECT_LT(deepest, 0.005f);
 }
 
 // The state after W5's first second at B = 6, at 1 and 2 OpenMP threads (the broadphase's grid

@@ -162,7 +162,10 @@ struct PairFinder::Scratch {
     rowPairs.resize(g.ny);
     sorter.begin(std::size_t(g.ny), n);
     buffers.resize(std::size_t(omp_get_max_threads()));
-#pragma omp parallel for schedule(dynamic)
+    // A few thousand boxes (a world's bodies, every step) sweep in well under a millisecond, less
+    // than OpenMP's threads take to start and meet at the barrier (and far less than they spin
+    // there when the other core is busy).
+#pragma omp parallel for schedule(dynamic) if (n >= 20'000)
     for (int cy = 0; cy < g.ny; ++cy) {
       CellBuffer& buffer = buffers[std::size_t(omp_get_thread_num())];
       rowPairs[cy].clear();

@@ -3,7 +3,9 @@
 
 #include <string>
 
+#include "src/core/on_path.hpp"
 #include "src/reference/rigid/step-inl.hpp"
+#include "src/rigid/contact_rows.hpp"
 #include "src/reference/validate-inl.hpp"
 
 namespace simdphys {
@@ -67,7 +69,13 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
   std::vector<BodyT<float>> state = Internals::load<float>(bodies);
   const std::vector<std::uint32_t> slots = Internals::slots(bodies);
   std::vector<CachedManifoldT<float>> cache = bodies.cache_;
-  const RigidStepStats stats = stepState(state, slots, cache, obstacles, bodies.settings(), dt);
+  // The contact passes on the active path: the reference on Eigen, or the kernels over rows
+  // (or their plain loops), the rest of the step shared.
+  const RigidStepStats stats =
+      referencePathActive()
+          ? stepState(state, slots, cache, obstacles, bodies.settings(), dt)
+          : stepState(state, slots, cache, obstacles, bodies.settings(), dt,
+                      KernelPasses(plainLoopsActive(), std::uint32_t(state.size())));
   // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
   for (std::size_t i = 0; i < state.size(); ++i) {
     const std::string body = where + ": body " + std::to_string(i);

@@ -159,10 +159,30 @@ void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> s
 
 // One step of dt: bodies (their positions, orientations and velocities) move; `cache` holds
 // last step's impulses and receives this step's.
+// The contact passes on Eigen, one contact at a time: the reference. A kernel's passes
+// (src/rigid/contact_rows.hpp) take the same calls.
 template <class T>
+struct ReferencePasses {
+  void prepare(const std::vector<ContactConstraintT<T>>&, const std::vector<std::uint32_t>&,
+               const SolveParams<T>&) {}
+  void warmStart(std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b) {
+    detail::warmStart(c, b);
+  }
+  void solve(std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b,
+             const SolveParams<T>& p, bool useBias, bool reverse) {
+    solveContacts(c, b, p, useBias, reverse);
+  }
+  void restitution(std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b,
+                   T threshold) {
+    applyRestitution(c, b, threshold);
+  }
+  void finish(std::vector<ContactConstraintT<T>>&) {}
+};
+
+template <class T, class Passes = ReferencePasses<T>>
 RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> slots,
                          std::vector<CachedManifoldT<T>>& cache, const Obstacles& obstacles,
-                         const RigidSettings& s, T dt) {
+                         const RigidSettings& s, T dt, Passes&& passes = Passes()) {
   RigidStepStats stats;
   T deepest = 0;
   std::vector<ContactConstraintT<T>> contacts =
@@ -191,21 +211,23 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   const T hertz = std::min(T(s.contactHertz), T(0.25) / h);
   p.soft = Softness<T>(hertz, T(s.contactDampingRatio), h);
   p.staticSoft = Softness<T>(2 * hertz, T(s.contactDampingRatio), h);
+  passes.prepare(contacts, colourBegin, p);
   for (int sub = 0; sub < s.substeps; ++sub) {
     integrateVelocities(bodies, solver, s, h);
-    warmStart(contacts, solver);
+    passes.warmStart(contacts, solver);
     // The points of a manifold are solved in turn, forward in one pass and backward in the
     // next, so the order's bias (the first point takes the load and turns the body) cancels.
     for (int it = 0; it < s.iterations; ++it)
-      solveContacts(contacts, solver, p, true, ((sub + it) & 1) != 0);
+      passes.solve(contacts, solver, p, true, ((sub + it) & 1) != 0);
     integratePositions(bodies, solver, h);
-    if (s.model == ContactModel::kProjection)
+    if (s.model == ContactModel::kProjection)  // reads only the points' geometry
       projectPositions(contacts, solver, T(s.projection), T(s.linearSlop));
     if (s.model == ContactModel::kSoftStep)
       for (int it = 0; it < s.iterations; ++it)
-        solveContacts(contacts, solver, p, false, ((sub + it) & 1) == 0);
+        passes.solve(contacts, solver, p, false, ((sub + it) & 1) == 0);
   }
-  applyRestitution(contacts, solver, T(s.restitutionThreshold));
+  passes.restitution(contacts, solver, T(s.restitutionThreshold));
+  passes.finish(contacts);
 
   for (std::size_t i = 0; i < n; ++i) {
     BodyT<T>& b = bodies[i];

@@ -1,0 +1,46 @@
+// What the rigid bodies' contact kernels are given (rigid.hpp), Eigen-free so that it crosses from
+// the library to the kernels (simd/rigid.cpp): the solver bodies as fixed-size records, and the
+// contacts as rows of SoA lanes, colour after colour. The scalar reference
+// (src/reference/rigid/solver-inl.hpp) defines the arithmetic; the kernels follow it lane-wide.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace simdphys::core {
+
+// A body as the solver moves it within a step (src/reference/rigid/bodies-inl.hpp's SolverBodyT):
+// velocities, the motion since the step's start, the inverse mass and the world inverse inertia
+// (symmetric: xx, xy, xz, yy, yz, zz). 24 floats, so a body is a third of a 64-byte line pair.
+struct SolverBody {
+  float v[3], w[3], dp[3], dq[4];  // dq: x, y, z, w
+  float invMass;
+  float invInertia[6];
+  float pad[2];
+};
+
+// The contacts, a lane each. Fields per lane, then per point k (0..3) the block at
+// kPoint + k * kPointFields. A lane past a colour's contacts (padding) joins the static dummy to
+// itself with zero masses and impulses, so it changes nothing.
+struct ContactRows {
+  enum : std::size_t { nx, ny, nz, t1x, t1y, t1z, t2x, t2y, t2z, friction, restitution,
+                       biasRate, massScale, impulseScale, kPoint };
+  enum : std::size_t { rAx, rAy, rAz, rBx, rBy, rBz, base, normalMass, tangentMass1,
+                       tangentMass2, normalImpulse, tangent1, tangent2, maxNormal, relative,
+                       kPointFields };
+  static constexpr std::size_t kFields = kPoint + 4 * kPointFields;
+  float* f[kFields];
+  const std::uint32_t *a, *b;  // the bodies of each lane (b: the dummy for an obstacle)
+  const std::uint32_t* batchBegin;  // batches + 1 lane offsets, each a multiple of kStreamPad
+  std::size_t batches;
+};
+
+// One pass's constants (SolveParams of the reference): the model's bias for penetrating points.
+struct ContactPass {
+  enum Bias : std::uint32_t { kNone, kSoft, kBaumgarte };
+  std::uint32_t bias;
+  float invH, maxPush, baumgarte, slop;
+  bool reverse;  // points backward
+};
+
+}  // namespace simdphys::core

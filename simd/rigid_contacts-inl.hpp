@@ -1,0 +1,237 @@
+// The contact passes of the rigid-body solver (core/rigid_solve.hpp) written once over lanes: a
+// Highway vector of contacts (simd/rigid.cpp) or one contact at a time (its plain-loop baseline).
+// The arithmetic is src/reference/rigid/solver-inl.hpp's, point by point. Included inside each
+// target's namespace (no include guard, by design), after simd/particle_lanes-inl.hpp.
+
+// The bodies' records read and written a field at a time for the lanes' bodies: gathered and
+// scattered through `at` (each lane's record offset, in floats) on vectors, indexed on one lane.
+inline float gatherField(ScalarLane, const float* base, std::uint32_t at) { return base[at]; }
+inline void scatterField(float x, ScalarLane, float* base, std::uint32_t at) { base[at] = x; }
+template <class D, class VI>
+HWY_INLINE auto gatherField(D d, const float* base, VI at) {
+  return hn::GatherIndex(d, base, at);
+}
+template <class D, class V, class VI>
+HWY_INLINE void scatterField(V x, D d, float* base, VI at) {
+  hn::ScatterIndex(x, d, base, at);
+}
+
+inline std::uint32_t recordOffsets(ScalarLane, const std::uint32_t* index) {
+  return index[0] * std::uint32_t(sizeof(core::SolverBody) / sizeof(float));
+}
+template <class D>
+HWY_INLINE auto recordOffsets(D, const std::uint32_t* index) {
+  const hn::RebindToSigned<D> di;
+  const auto i = hn::BitCast(di, hn::LoadU(hn::RebindToUnsigned<D>(), index));
+  return hn::Mul(i, hn::Set(di, std::int32_t(sizeof(core::SolverBody) / sizeof(float))));
+}
+
+template <class D, class V = LaneOf<D>>
+HWY_INLINE Vec3L<V> cross(const Vec3L<V>& a, const Vec3L<V>& b) {
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
+// The lanes' bodies: what a pass reads of them, and their velocities written back.
+template <class D>
+struct LaneBodies {
+  using V = LaneOf<D>;
+  using I = decltype(recordOffsets(D(), static_cast<const std::uint32_t*>(nullptr)));
+  I at;
+  Vec3L<V> v, w, dp;
+  V dq[4];
+  V invMass;
+  V inertia[6];  // xx, xy, xz, yy, yz, zz
+
+  LaneBodies(D d, const core::SolverBody* bodies, const std::uint32_t* index, bool motion)
+      : at(recordOffsets(d, index)) {
+    const float* base = reinterpret_cast<const float*>(bodies);
+    const auto field = [&](std::size_t offset) { return gatherField(d, base + offset, at); };
+    for (int k = 0; k < 3; ++k) {
+      v[k] = field(offsetof(core::SolverBody, v) / 4 + std::size_t(k));
+      w[k] = field(offsetof(core::SolverBody, w) / 4 + std::size_t(k));
+      dp[k] = motion ? field(offsetof(core::SolverBody, dp) / 4 + std::size_t(k)) : Zero(d);
+    }
+    for (int k = 0; k < 4; ++k)
+      dq[k] = motion ? field(offsetof(core::SolverBody, dq) / 4 + std::size_t(k)) : Zero(d);
+    invMass = field(offsetof(core::SolverBody, invMass) / 4);
+    for (int k = 0; k < 6; ++k) inertia[k] = field(offsetof(core::SolverBody, invInertia) / 4 + std::size_t(k));
+  }
+  void store(D d, core::SolverBody* bodies) const {
+    float* base = reinterpret_cast<float*>(bodies);
+    for (int k = 0; k < 3; ++k) {
+      scatterField(v[k], d, base + offsetof(core::SolverBody, v) / 4 + std::size_t(k), at);
+      scatterField(w[k], d, base + offsetof(core::SolverBody, w) / 4 + std::size_t(k), at);
+    }
+  }
+  // The world inverse inertia times x (the reference's Mat3 product: a row's dot with x, in
+  // Eigen's order x + (y + z)).
+  Vec3L<V> inertiaTimes(const Vec3L<V>& x) const {
+    return {{inertia[0] * x[0] + (inertia[1] * x[1] + inertia[2] * x[2]),
+             inertia[1] * x[0] + (inertia[3] * x[1] + inertia[4] * x[2]),
+             inertia[2] * x[0] + (inertia[4] * x[1] + inertia[5] * x[2])}};
+  }
+  // dq * r - r: where the anchor r has turned to since the step's start.
+  Vec3L<V> turned(const Vec3L<V>& r) const {
+    // Rotating by a unit quaternion: r + 2 q x (q x r + w r).
+    const Vec3L<V> q{{dq[0], dq[1], dq[2]}};
+    const Vec3L<V> t = cross<D>(q, r) + r * dq[3];
+    const Vec3L<V> u = cross<D>(q, t);
+    return u + u;
+  }
+};
+
+template <class V>
+struct PointLanes {
+  Vec3L<V> rA, rB;
+};
+
+template <class D, class V = LaneOf<D>>
+HWY_INLINE Vec3L<V> load3(D d, float* const* f, std::size_t first, std::size_t lane) {
+  return {{Load(d, f[first] + lane), Load(d, f[first + 1] + lane), Load(d, f[first + 2] + lane)}};
+}
+
+template <class D, class V = LaneOf<D>>
+HWY_INLINE void applyImpulse(LaneBodies<D>& a, LaneBodies<D>& b, const Vec3L<V>& rA,
+                             const Vec3L<V>& rB, const Vec3L<V>& P) {
+  a.v = a.v - P * a.invMass;
+  a.w = a.w - a.inertiaTimes(cross<D>(rA, P));
+  b.v = b.v + P * b.invMass;
+  b.w = b.w + b.inertiaTimes(cross<D>(rB, P));
+}
+
+template <class D, class V = LaneOf<D>>
+HWY_INLINE V relativeAlong(const LaneBodies<D>& a, const LaneBodies<D>& b, const Vec3L<V>& rA,
+                           const Vec3L<V>& rB, const Vec3L<V>& n) {
+  const Vec3L<V> dv = b.v + cross<D>(b.w, rB) - a.v - cross<D>(a.w, rA);
+  return dot(dv, n);
+}
+
+// Each batch's vectors in turn; a batch's lanes share no moving body.
+template <class D, class F>
+HWY_INLINE void forEachVector(D d, const core::ContactRows& rows, F&& f) {
+  const std::size_t N = Lanes(d);
+  for (std::size_t batch = 0; batch < rows.batches; ++batch)
+    for (std::size_t lane = rows.batchBegin[batch]; lane < rows.batchBegin[batch + 1]; lane += N)
+      f(lane);
+}
+
+template <class D>
+void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
+  using V = LaneOf<D>;
+  using R = core::ContactRows;
+  forEachVector(d, rows, [&](std::size_t lane) {
+    LaneBodies<D> a(d, bodies, rows.a + lane, false), b(d, bodies, rows.b + lane, false);
+    const Vec3L<V> n = load3(d, rows.f, R::nx, lane), t1 = load3(d, rows.f, R::t1x, lane),
+                   t2 = load3(d, rows.f, R::t2x, lane);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t p = R::kPoint + k * R::kPointFields;
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> P = n * Load(d, rows.f[p + R::normalImpulse] + lane) +
+                         t1 * Load(d, rows.f[p + R::tangent1] + lane) +
+                         t2 * Load(d, rows.f[p + R::tangent2] + lane);
+      applyImpulse(a, b, rA, rB, P);
+    }
+    a.store(d, bodies);
+    b.store(d, bodies);
+  });
+}
+
+template <class D>
+void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
+            const core::ContactPass& pass) {
+  using V = LaneOf<D>;
+  using R = core::ContactRows;
+  const V zero = Zero(d), one = Set(d, 1.0f), invH = Set(d, pass.invH),
+          minPush = Set(d, -pass.maxPush), baumgarte = Set(d, pass.baumgarte * pass.invH),
+          slop = Set(d, pass.slop);
+  forEachVector(d, rows, [&](std::size_t lane) {
+    LaneBodies<D> a(d, bodies, rows.a + lane, true), b(d, bodies, rows.b + lane, true);
+    const Vec3L<V> n = load3(d, rows.f, R::nx, lane);
+    V biasRate = zero, massScale = one, impulseScale = zero;
+    if (pass.bias == core::ContactPass::kSoft) {
+      biasRate = Load(d, rows.f[R::biasRate] + lane);
+      massScale = Load(d, rows.f[R::massScale] + lane);
+      impulseScale = Load(d, rows.f[R::impulseScale] + lane);
+    }
+    for (std::size_t j = 0; j < 4; ++j) {
+      const std::size_t k = pass.reverse ? 3 - j : j;
+      const std::size_t p = R::kPoint + k * R::kPointFields;
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> moved = (b.dp + b.turned(rB)) - (a.dp + a.turned(rA));
+      const V sep = Load(d, rows.f[p + R::base] + lane) + dot(moved, n);
+      V bias = zero, ms = one, is = zero;
+      if (pass.bias == core::ContactPass::kSoft) {
+        bias = Max(biasRate * sep, minPush), ms = massScale, is = impulseScale;
+      } else if (pass.bias == core::ContactPass::kBaumgarte) {
+        bias = baumgarte * Min(zero, sep + slop);
+      }
+      const auto speculative = Gt(sep, zero);
+      bias = IfThenElse(speculative, sep * invH, bias);
+      ms = IfThenElse(speculative, one, ms);
+      is = IfThenElse(speculative, zero, is);
+      const V vn = relativeAlong(a, b, rA, rB, n);
+      float* accumulated = rows.f[p + R::normalImpulse] + lane;
+      const V old = Load(d, accumulated);
+      const V mass = Load(d, rows.f[p + R::normalMass] + lane);
+      const V total = Max(old + (Neg(mass * ms * (vn + bias)) - is * old), zero);
+      const V impulse = total - old;
+      Store(total, d, accumulated);
+      float* maxNormal = rows.f[p + R::maxNormal] + lane;
+      Store(Max(Load(d, maxNormal), impulse), d, maxNormal);
+      float* relative = rows.f[p + R::relative] + lane;
+      Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d, relative);
+      applyImpulse(a, b, rA, rB, n * impulse);
+    }
+    const Vec3L<V> t[2] = {load3(d, rows.f, R::t1x, lane), load3(d, rows.f, R::t2x, lane)};
+    const V friction = Load(d, rows.f[R::friction] + lane);
+    for (std::size_t j = 0; j < 4; ++j) {
+      const std::size_t k = pass.reverse ? 3 - j : j;
+      const std::size_t p = R::kPoint + k * R::kPointFields;
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const V limit = friction * Load(d, rows.f[p + R::normalImpulse] + lane);
+      for (std::size_t i = 0; i < 2; ++i) {
+        const V vt = relativeAlong(a, b, rA, rB, t[i]);
+        float* accumulated = rows.f[p + R::tangent1 + i] + lane;
+        const V old = Load(d, accumulated);
+        const V total = Min(Max(old - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt,
+                                Neg(limit)), limit);
+        Store(total, d, accumulated);
+        applyImpulse(a, b, rA, rB, t[i] * (total - old));
+      }
+    }
+    a.store(d, bodies);
+    b.store(d, bodies);
+  });
+}
+
+template <class D>
+void restitutionT(D d, const core::ContactRows& rows, core::SolverBody* bodies, float threshold) {
+  using V = LaneOf<D>;
+  using R = core::ContactRows;
+  const V zero = Zero(d), minusThreshold = Set(d, -threshold);
+  forEachVector(d, rows, [&](std::size_t lane) {
+    const V e = Load(d, rows.f[R::restitution] + lane);
+    if (AllTrue(d, Eq(e, zero))) return;
+    LaneBodies<D> a(d, bodies, rows.a + lane, false), b(d, bodies, rows.b + lane, false);
+    const Vec3L<V> n = load3(d, rows.f, R::nx, lane);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t p = R::kPoint + k * R::kPointFields;
+      const V relative = Load(d, rows.f[p + R::relative] + lane);
+      const auto active = And(Not(Eq(e, zero)),
+                              And(Le(relative, minusThreshold),
+                                  Not(Eq(Load(d, rows.f[p + R::maxNormal] + lane), zero))));
+      if (AllFalse(d, active)) continue;
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const V vn = relativeAlong(a, b, rA, rB, n);
+      float* accumulated = rows.f[p + R::normalImpulse] + lane;
+      const V old = Load(d, accumulated);
+      const V total = IfThenElse(
+          active, Max(old - Load(d, rows.f[p + R::normalMass] + lane) * (vn + e * relative), zero),
+          old);
+      Store(total, d, accumulated);
+      applyImpulse(a, b, rA, rB, n * (total - old));
+    }
+    a.store(d, bodies);
+    b.store(d, bodies);
+  });
+}

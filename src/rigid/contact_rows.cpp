@@ -1,0 +1,134 @@
+// KernelPasses (src/rigid/contact_rows.hpp).
+#include "src/rigid/contact_rows.hpp"
+
+#include "simd/kernels.hpp"
+
+namespace simdphys::detail {
+
+using R = core::ContactRows;
+
+void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contacts,
+                           const std::vector<std::uint32_t>& colourBegin,
+                           const SolveParams<float>& p) {
+  // Batches: each overflow contact alone (they may share bodies), then each colour.
+  batchBegin_.assign(1, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
+  for (std::uint32_t i = 0; i < colourBegin[1]; ++i) ranges.push_back({i, i + 1});
+  for (std::size_t k = 1; k + 1 < colourBegin.size(); ++k)
+    if (colourBegin[k + 1] > colourBegin[k]) ranges.push_back({colourBegin[k], colourBegin[k + 1]});
+  for (const auto& [first, last] : ranges)
+    batchBegin_.push_back(batchBegin_.back() + std::uint32_t(paddedSize(last - first)));
+  lanes_ = batchBegin_.back();
+  fields_.assign(R::kFields * lanes_, 0.0f);
+  // Padding lanes join the static dummy to itself: no mass, no impulse, nothing moves.
+  a_.assign(lanes_, dummy_), b_.assign(lanes_, dummy_);
+  laneOf_.resize(contacts.size());
+  std::size_t batch = 0;
+  for (const auto& [first, last] : ranges) {
+    for (std::uint32_t i = first; i < last; ++i) laneOf_[i] = batchBegin_[batch] + (i - first);
+    ++batch;
+  }
+  float* const f = fields_.data();
+  const auto at = [&](std::size_t field, std::size_t lane) -> float& {
+    return f[field * lanes_ + lane];
+  };
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const ContactConstraintT<float>& c = contacts[i];
+    const std::size_t lane = laneOf_[i];
+    a_[lane] = c.a, b_[lane] = c.b;
+    for (int k = 0; k < 3; ++k) {
+      at(R::nx + std::size_t(k), lane) = c.normal[k];
+      at(R::t1x + std::size_t(k), lane) = c.tangent[0][k];
+      at(R::t2x + std::size_t(k), lane) = c.tangent[1][k];
+    }
+    at(R::friction, lane) = c.friction, at(R::restitution, lane) = c.restitution;
+    const Softness<float>& soft = c.isStatic ? p.staticSoft : p.soft;
+    at(R::biasRate, lane) = soft.biasRate, at(R::massScale, lane) = soft.massScale;
+    at(R::impulseScale, lane) = soft.impulseScale;
+    for (int j = 0; j < c.count; ++j) {
+      const ContactPointConstraintT<float>& q = c.points[std::size_t(j)];
+      const std::size_t o = R::kPoint + std::size_t(j) * R::kPointFields;
+      for (int k = 0; k < 3; ++k) {
+        at(o + R::rAx + std::size_t(k), lane) = q.rA[k];
+        at(o + R::rBx + std::size_t(k), lane) = q.rB[k];
+      }
+      at(o + R::base, lane) = q.baseSeparation;
+      at(o + R::normalMass, lane) = q.normalMass;
+      at(o + R::tangentMass1, lane) = q.tangentMass[0];
+      at(o + R::tangentMass2, lane) = q.tangentMass[1];
+      at(o + R::normalImpulse, lane) = q.normalImpulse;
+      at(o + R::tangent1, lane) = q.tangentImpulse[0];
+      at(o + R::tangent2, lane) = q.tangentImpulse[1];
+      at(o + R::maxNormal, lane) = q.maxNormalImpulse;
+      at(o + R::relative, lane) = q.relativeVelocity;
+    }
+  }
+}
+
+core::ContactRows KernelPasses::rows() {
+  core::ContactRows r;
+  for (std::size_t k = 0; k < R::kFields; ++k) r.f[k] = fields_.data() + k * lanes_;
+  r.a = a_.data(), r.b = b_.data();
+  r.batchBegin = batchBegin_.data();
+  r.batches = batchBegin_.size() - 1;
+  return r;
+}
+
+void KernelPasses::toRecords(const std::vector<SolverBodyT<float>>& bodies) {
+  records_.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const SolverBodyT<float>& b = bodies[i];
+    core::SolverBody& r = records_[i];
+    for (int k = 0; k < 3; ++k) r.v[k] = b.v[k], r.w[k] = b.w[k], r.dp[k] = b.dp[k];
+    r.dq[0] = b.dq.x(), r.dq[1] = b.dq.y(), r.dq[2] = b.dq.z(), r.dq[3] = b.dq.w();
+    r.invMass = b.invMass;
+    const Mat3f& I = b.invInertia;
+    r.invInertia[0] = I(0, 0), r.invInertia[1] = I(0, 1), r.invInertia[2] = I(0, 2);
+    r.invInertia[3] = I(1, 1), r.invInertia[4] = I(1, 2), r.invInertia[5] = I(2, 2);
+  }
+}
+
+void KernelPasses::fromRecords(std::vector<SolverBodyT<float>>& bodies) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (int k = 0; k < 3; ++k) bodies[i].v[k] = records_[i].v[k], bodies[i].w[k] = records_[i].w[k];
+}
+
+void KernelPasses::warmStart(std::vector<ContactConstraintT<float>>&,
+                             std::vector<SolverBodyT<float>>& bodies) {
+  toRecords(bodies);
+  (plainLoops_ ? simd::warmStartContactsAutovec : simd::warmStartContacts)(rows(), records_.data());
+  fromRecords(bodies);
+}
+
+void KernelPasses::solve(std::vector<ContactConstraintT<float>>&,
+                         std::vector<SolverBodyT<float>>& bodies, const SolveParams<float>& p,
+                         bool useBias, bool reverse) {
+  core::ContactPass pass{core::ContactPass::kNone, p.invH, p.maxPush, p.baumgarte, p.slop, reverse};
+  if (useBias && p.model == ContactModel::kSoftStep) pass.bias = core::ContactPass::kSoft;
+  if (useBias && p.model == ContactModel::kBaumgarte) pass.bias = core::ContactPass::kBaumgarte;
+  toRecords(bodies);
+  (plainLoops_ ? simd::solveContactsAutovec : simd::solveContacts)(rows(), records_.data(), pass);
+  fromRecords(bodies);
+}
+
+void KernelPasses::restitution(std::vector<ContactConstraintT<float>>&,
+                               std::vector<SolverBodyT<float>>& bodies, float threshold) {
+  toRecords(bodies);
+  (plainLoops_ ? simd::restituteContactsAutovec : simd::restituteContacts)(rows(), records_.data(),
+                                                                           threshold);
+  fromRecords(bodies);
+}
+
+void KernelPasses::finish(std::vector<ContactConstraintT<float>>& contacts) const {
+  const float* const f = fields_.data();
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    for (int j = 0; j < contacts[i].count; ++j) {
+      ContactPointConstraintT<float>& q = contacts[i].points[std::size_t(j)];
+      const std::size_t o = R::kPoint + std::size_t(j) * R::kPointFields, lane = laneOf_[i];
+      q.normalImpulse = f[(o + R::normalImpulse) * lanes_ + lane];
+      q.tangentImpulse[0] = f[(o + R::tangent1) * lanes_ + lane];
+      q.tangentImpulse[1] = f[(o + R::tangent2) * lanes_ + lane];
+    }
+}
+
+}  // namespace simdphys::detail
