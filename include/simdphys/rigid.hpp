@@ -153,6 +153,9 @@ class RigidBodies : public StreamSet<fields::Body> {
   // (solved one at a time).
   std::size_t colourCount() const { return colours_; }
   std::size_t overflowCount() const { return overflow_; }
+  // The wall time the last step spent in the contact passes (warm start, solve, relax,
+  // restitution): what the wide kernels do, for the benchmarks.
+  double contactPassSeconds() const { return passSeconds_; }
 
   struct Internals;  // src/rigid/: the step's access to the streams and the contact cache
 
@@ -169,6 +172,7 @@ class RigidBodies : public StreamSet<fields::Body> {
   std::vector<detail::CachedManifoldT<float>> cache_;
   float deepest_ = 0;
   std::size_t manifolds_ = 0, points_ = 0, colours_ = 0, overflow_ = 0;
+  double passSeconds_ = 0;
 };
 
 }  // namespace simdphys

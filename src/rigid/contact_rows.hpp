@@ -16,6 +16,7 @@ class KernelPasses {
   // plainLoops: the passes' plain-loop baseline rather than the kernels. dummy: the static
   // dummy's index (the last solver body).
   KernelPasses(bool plainLoops, std::uint32_t dummy) : plainLoops_(plainLoops), dummy_(dummy) {}
+  void reset(bool plainLoops, std::uint32_t dummy) { plainLoops_ = plainLoops, dummy_ = dummy; }
 
   void prepare(const std::vector<ContactConstraintT<float>>& contacts,
                const std::vector<std::uint32_t>& colourBegin, const SolveParams<float>& p);

@@ -63,6 +63,16 @@ template std::vector<detail::BodyT<double>> Internals::load(const RigidBodies&);
 template void Internals::store(RigidBodies&, const std::vector<detail::BodyT<float>>&);
 template void Internals::store(RigidBodies&, const std::vector<detail::BodyT<double>>&);
 
+namespace {
+// The kernels' rows and records, a thread's, reused from step to step (rebuilt whole each step:
+// no state carries over) so that their hundreds of kilobytes are not faulted in every step.
+detail::KernelPasses& kernelPasses(std::size_t bodies) {
+  static thread_local detail::KernelPasses passes(false, 0);
+  passes.reset(detail::plainLoopsActive(), std::uint32_t(bodies));
+  return passes;
+}
+}  // namespace
+
 void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
                      const std::string& where) {
   using namespace detail;
@@ -74,8 +84,7 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
   const RigidStepStats stats =
       referencePathActive()
           ? stepState(state, slots, cache, obstacles, bodies.settings(), dt)
-          : stepState(state, slots, cache, obstacles, bodies.settings(), dt,
-                      KernelPasses(plainLoopsActive(), std::uint32_t(state.size())));
+          : stepState(state, slots, cache, obstacles, bodies.settings(), dt, kernelPasses(state.size()));
   // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
   for (std::size_t i = 0; i < state.size(); ++i) {
     const std::string body = where + ": body " + std::to_string(i);
@@ -90,6 +99,7 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
   bodies.points_ = stats.points;
   bodies.colours_ = stats.colours;
   bodies.overflow_ = stats.overflow;
+  bodies.passSeconds_ = stats.passSeconds;
 }
 
 void detail::stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt,

@@ -133,7 +133,10 @@ std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& co
   std::vector<std::uint32_t> begin(kColours + 2, 0);
   for (const int c : colour) ++begin[std::size_t(c + 2)];
   for (std::size_t k = 1; k < begin.size(); ++k) begin[k] += begin[k - 1];
-  std::vector<ContactConstraintT<T>> ordered(contacts.size());
+  // Reused from step to step (a thread's buffer, rewritten whole each time): the contacts are
+  // hundreds of kilobytes, which fresh allocations would fault in page by page every step.
+  static thread_local std::vector<ContactConstraintT<T>> ordered;
+  ordered.resize(contacts.size());
   std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
   for (std::size_t i = 0; i < contacts.size(); ++i)
     ordered[next[std::size_t(colour[i] + 1)]++] = contacts[i];
@@ -146,7 +149,7 @@ std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& co
 // body's handle slot. maxSeparation of a pair: the speculative distance plus the distance the
 // two may close within dt.
 template <class T>
-std::vector<ContactConstraintT<T>> findContacts(const std::vector<BodyT<T>>& bodies,
+void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vector<BodyT<T>>& bodies,
                                                 std::span<const std::uint32_t> slots,
                                                 const Obstacles& obstacles,
                                                 const RigidSettings& s, T dt, T& deepest) {
@@ -167,7 +170,7 @@ std::vector<ContactConstraintT<T>> findContacts(const std::vector<BodyT<T>>& bod
   }
   std::vector<Pair> pairs;
   findPairs(bounds, pairs);
-  std::vector<ContactConstraintT<T>> contacts;
+  contacts.clear();
   contacts.reserve(pairs.size() + n);
   std::vector<std::pair<std::uint64_t, Pair>> keyed;
   keyed.reserve(pairs.size());
@@ -206,7 +209,6 @@ std::vector<ContactConstraintT<T>> findContacts(const std::vector<BodyT<T>>& bod
                     bodies[i].restitution, true, pairKey(slots[i], kObstacleBit | o));
     }
   }
-  return contacts;
 }
 
 }  // namespace simdphys::detail

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include "src/reference/rigid/narrowphase-inl.hpp"
@@ -14,6 +15,7 @@ namespace simdphys::detail {
 struct RigidStepStats {
   double deepest = 0;
   std::size_t manifolds = 0, points = 0, colours = 0, overflow = 0;
+  double passSeconds = 0;  // in the contact passes (warm start, solve, relax, restitution)
 };
 
 // Last step's impulses for the contacts whose key and feature ids match.
@@ -185,8 +187,9 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
                          const RigidSettings& s, T dt, Passes&& passes = Passes()) {
   RigidStepStats stats;
   T deepest = 0;
-  std::vector<ContactConstraintT<T>> contacts =
-      findContacts(bodies, slots, obstacles, s, dt, deepest);
+  // A thread's buffer, reused from step to step (rewritten whole: no state carries over).
+  static thread_local std::vector<ContactConstraintT<T>> contacts;
+  findContacts(contacts, bodies, slots, obstacles, s, dt, deepest);
   const std::vector<std::uint32_t> colourBegin = colourContacts(contacts, bodies);
   stats.overflow = colourBegin[1];
   for (std::size_t k = 1; k + 1 < colourBegin.size(); ++k)
@@ -212,21 +215,27 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   p.soft = Softness<T>(hertz, T(s.contactDampingRatio), h);
   p.staticSoft = Softness<T>(2 * hertz, T(s.contactDampingRatio), h);
   passes.prepare(contacts, colourBegin, p);
+  using Clock = std::chrono::steady_clock;
+  const auto timed = [&](auto&& pass) {
+    const auto start = Clock::now();
+    pass();
+    stats.passSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+  };
   for (int sub = 0; sub < s.substeps; ++sub) {
     integrateVelocities(bodies, solver, s, h);
-    passes.warmStart(contacts, solver);
+    timed([&] { passes.warmStart(contacts, solver); });
     // The points of a manifold are solved in turn, forward in one pass and backward in the
     // next, so the order's bias (the first point takes the load and turns the body) cancels.
     for (int it = 0; it < s.iterations; ++it)
-      passes.solve(contacts, solver, p, true, ((sub + it) & 1) != 0);
+      timed([&] { passes.solve(contacts, solver, p, true, ((sub + it) & 1) != 0); });
     integratePositions(bodies, solver, h);
     if (s.model == ContactModel::kProjection)  // reads only the points' geometry
       projectPositions(contacts, solver, T(s.projection), T(s.linearSlop));
     if (s.model == ContactModel::kSoftStep)
       for (int it = 0; it < s.iterations; ++it)
-        passes.solve(contacts, solver, p, false, ((sub + it) & 1) == 0);
+        timed([&] { passes.solve(contacts, solver, p, false, ((sub + it) & 1) == 0); });
   }
-  passes.restitution(contacts, solver, T(s.restitutionThreshold));
+  timed([&] { passes.restitution(contacts, solver, T(s.restitutionThreshold)); });
   passes.finish(contacts);
 
   for (std::size_t i = 0; i < n; ++i) {
