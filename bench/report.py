@@ -179,12 +179,13 @@ SECTIONS = [
      "no restitution, no sleeping) on a ground box, 600 frames at 60 Hz, one iteration a frame. "
      "At the end: the largest displacement of any box from its start (a stable solver keeps it "
      "below 0.05) and whether every box is within 0.5 of its start; over every frame the "
-     "deepest penetration of any contact, by the engine's own measure. simdphys runs its rigid "
-     "step on the scalar reference (the wide kernel is to come): soft_step_s<k>_i<i> is the "
+     "deepest penetration of any contact, by the engine's own measure. soft_step_s<k>_i<i> is the "
      "soft step (60 Hz contacts) with k substeps and i iterations, the default k = 6; "
      "baumgarte and projection the rigid models over their iterations. error: the largest and "
      "RMS distance of a box from the same pyramid stepped by the double-precision reference "
-     "(B = 10, the three models' usual settings). Peers: Bullet's sequential impulses "
+     "(B = 10, the three models' usual settings). The defaults run on every path (the contact "
+     "passes as kernels; contact_passes: their time a frame) and as the kernels' plain loops "
+     "(autovec); the sweeps on the reference. Peers: Bullet's sequential impulses "
      "(10 iterations) and ODE's QuickStep (20 iterations) at its defaults and at its stacking "
      "settings. The plot sets the displacement and the penetration against the time of a frame."),
     ("Integrators: error against cost on closed forms",
@@ -603,7 +604,7 @@ def pyramid_plot(runs, tasks, title, filename):
             ax = axes[row][col]
             families = {}
             for r in mine:
-                if r.path != "peer" and pyramid_family(r.method):
+                if r.path == "reference" and pyramid_family(r.method):
                     families.setdefault(pyramid_family(r.method), []).append(r)
             for f, pts in sorted(families.items()):
                 pts.sort(key=lambda r: r.ms)
@@ -614,11 +615,13 @@ def pyramid_plot(runs, tasks, title, filename):
                     ax.annotate(f"{k:.0f}", (r.ms, max(r.counters.get(key, 0), 1e-6)), fontsize=7,
                                 xytext=(3, -9), textcoords="offset points")
             for r in mine:
-                if r.path == "peer":
+                if r.path != "reference":  # peers grey; the defaults on each SIMD path black
+                    peer = r.path == "peer"
                     y = max(r.counters.get(key, 0), 1e-6)
-                    ax.plot([r.ms], [y], marker="s", color="grey", linestyle="none")
-                    ax.annotate(r.method, (r.ms, y), fontsize=7, xytext=(3, 3),
-                                textcoords="offset points")
+                    ax.plot([r.ms], [y], marker="s" if peer else "D",
+                            color="grey" if peer else "black", linestyle="none")
+                    ax.annotate(r.method if peer else f"{r.method} {r.path}", (r.ms, y), fontsize=7,
+                                xytext=(3, 3), textcoords="offset points")
             ax.set_xscale("log")
             ax.set_yscale("log")
             ax.set_title(f"B = {n} (numbers: substeps, or iterations)", fontsize=10)
