@@ -349,10 +349,12 @@ TEST(Rigid, SleepingStackWakesOnContactImpulseAndRemoval) {
     }
     EXPECT_TRUE(woke);
   }
-  {  // a push on the top box
+  {  // a push on the top box (a refused one changes nothing, not even its sleep)
     World world = groundWorld();
     std::vector<Handle> hs;
     sleepingStack(world, hs);
+    expectError([&] { world.bodies().setVelocity(hs[2], {std::nanf(""), 0, 0}); }, "velocity.x");
+    EXPECT_TRUE(world.bodies().asleep(hs[0]));
     world.bodies().applyImpulse(hs[2], {1, 0, 0}, world.bodies().position(hs[2]));
     EXPECT_FALSE(world.bodies().asleep(hs[0]));
     run(world, 30);

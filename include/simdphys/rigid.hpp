@@ -166,6 +166,9 @@ class RigidBodies : public StreamSet<fields::Body> {
   void storeVec(std::size_t field, std::size_t i, const Vec3f& v);
   // Wakes body i's island, if asleep.
   void wake(std::uint32_t i);
+  // A 3-vector field of a live body set to a finite, in-range value, waking it; else Error.
+  void setVec(Handle body, const char* where, std::size_t field, const char* name,
+              const Vec3f& value);
 
   RigidSettings settings_;
   HandleTable handles_;

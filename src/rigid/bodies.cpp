@@ -140,6 +140,14 @@ void RigidBodies::remove(Handle h) {
   eraseSwap(handles_.remove(h, "RigidBodies::remove", "body"));
 }
 
+void RigidBodies::setVec(Handle h, const char* where, std::size_t f, const char* name,
+                         const Vec3f& value) {
+  const std::uint32_t i = require(h, where);
+  detail::requireFiniteField(value, where, name);
+  wake(i);
+  storeVec(f, i, value);
+}
+
 void RigidBodies::wake(std::uint32_t i) {
   const float island = value(F::Body::island, i);
   if (island == 0) return;
@@ -189,33 +197,24 @@ Sphere RigidBodies::sphere(Handle h) const {
 }
 
 void RigidBodies::setPosition(Handle h, const Vec3f& p) {
-  const std::uint32_t i = require(h, "RigidBodies::setPosition");
-  wake(i);
-  detail::requireFiniteField(p, "RigidBodies::setPosition", "position");
-  storeVec(F::Body::x, i, p);
+  setVec(h, "RigidBodies::setPosition", F::Body::x, "position", p);
 }
 
 void RigidBodies::setOrientation(Handle h, const Quatf& q) {
   const std::uint32_t i = require(h, "RigidBodies::setOrientation");
-  wake(i);
   requireOrientation(q, "RigidBodies::setOrientation");
+  wake(i);
   const Quatf u = q.normalized();
   storeVec(F::Body::qx, i, u.vec());
   paddedData(F::Body::qw)[i] = u.w();
 }
 
 void RigidBodies::setVelocity(Handle h, const Vec3f& v) {
-  const std::uint32_t i = require(h, "RigidBodies::setVelocity");
-  wake(i);
-  detail::requireFiniteField(v, "RigidBodies::setVelocity", "velocity");
-  storeVec(F::Body::vx, i, v);
+  setVec(h, "RigidBodies::setVelocity", F::Body::vx, "velocity", v);
 }
 
 void RigidBodies::setAngularVelocity(Handle h, const Vec3f& w) {
-  const std::uint32_t i = require(h, "RigidBodies::setAngularVelocity");
-  wake(i);
-  detail::requireFiniteField(w, "RigidBodies::setAngularVelocity", "angularVelocity");
-  storeVec(F::Body::wx, i, w);
+  setVec(h, "RigidBodies::setAngularVelocity", F::Body::wx, "angularVelocity", w);
 }
 
 void RigidBodies::applyImpulse(Handle h, const Vec3f& impulse, const Vec3f& point) {
@@ -238,17 +237,11 @@ void RigidBodies::applyImpulse(Handle h, const Vec3f& impulse, const Vec3f& poin
 }
 
 void RigidBodies::setForce(Handle h, const Vec3f& f) {
-  const std::uint32_t i = require(h, "RigidBodies::setForce");
-  wake(i);
-  detail::requireFiniteField(f, "RigidBodies::setForce", "force");
-  storeVec(F::Body::fx, i, f);
+  setVec(h, "RigidBodies::setForce", F::Body::fx, "force", f);
 }
 
 void RigidBodies::setTorque(Handle h, const Vec3f& t) {
-  const std::uint32_t i = require(h, "RigidBodies::setTorque");
-  wake(i);
-  detail::requireFiniteField(t, "RigidBodies::setTorque", "torque");
-  storeVec(F::Body::tx, i, t);
+  setVec(h, "RigidBodies::setTorque", F::Body::tx, "torque", t);
 }
 
 }  // namespace simdphys
