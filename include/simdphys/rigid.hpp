@@ -154,7 +154,7 @@ class RigidBodies : public StreamSet<fields::Body> {
   std::size_t colourCount() const { return colours_; }
   std::size_t overflowCount() const { return overflow_; }
   // The wall time the last step spent in the contact passes (warm start, solve, relax,
-  // restitution): what the wide kernels do, for the benchmarks.
+  // restitution): the share of a step the wide kernels take.
   double contactPassSeconds() const { return passSeconds_; }
 
   struct Internals;  // src/rigid/: the step's access to the streams and the contact cache
