@@ -472,6 +472,17 @@ def integrator_plot(runs, tasks, title, filename):
     return True
 
 
+def frame_axes(ax, title, ylabel):
+    """A simulation's panel: log-log, ms a frame along x."""
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_title(title, fontsize=10)
+    ax.set_xlabel("ms a frame, one thread (lower is faster)", fontsize=9)
+    ax.set_ylabel(ylabel, fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="lower left")
+
+
 def cloth_runs(runs):
     """The W3 runs that finished, by n then method."""
     return sorted((r for r in runs.values() if r.task == "cloth" and r.ms and not r.error),
@@ -547,13 +558,8 @@ def cloth_plot(runs, tasks, title, filename):
                 boom = " (exploded)" if r.counters.get("exploded") else ""
                 ax.annotate(f"{r.method} {r.path}{boom}", (r.ms, y), fontsize=7, xytext=(3, 3),
                             textcoords="offset points")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_title(f"n = {n} (numbers: substeps)", fontsize=10)
-        ax.set_xlabel("ms a frame, one thread (lower is faster)", fontsize=9)
-        ax.set_ylabel("mean structural stretch at the end (lower holds better)", fontsize=9)
-        ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=8, loc="lower left")
+        frame_axes(ax, f"n = {n} (numbers: substeps)",
+                   "mean structural stretch at the end (lower holds better)")
     fig.suptitle(title, x=0.02, ha="left", fontsize=11)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     fig.savefig(filename, dpi=100)
@@ -622,13 +628,7 @@ def pyramid_plot(runs, tasks, title, filename):
                             color="grey" if peer else "black", linestyle="none")
                     ax.annotate(r.method if peer else f"{r.method} {r.path}", (r.ms, y), fontsize=7,
                                 xytext=(3, 3), textcoords="offset points")
-            ax.set_xscale("log")
-            ax.set_yscale("log")
-            ax.set_title(f"B = {n} (numbers: substeps, or iterations)", fontsize=10)
-            ax.set_xlabel("ms a frame, one thread (lower is faster)", fontsize=9)
-            ax.set_ylabel(label, fontsize=9)
-            ax.grid(alpha=0.3, which="both")
-            ax.legend(fontsize=8, loc="lower left")
+            frame_axes(ax, f"B = {n} (numbers: substeps, or iterations)", label)
     fig.suptitle(title, x=0.02, ha="left", fontsize=11)
     fig.tight_layout(rect=(0, 0, 1, 0.96))
     fig.savefig(filename, dpi=100)

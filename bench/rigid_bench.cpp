@@ -27,7 +27,7 @@ using Clock = std::chrono::steady_clock;
 struct Model {
   std::string name;
   RigidSettings settings;
-  bool withError;  // run the double reference too (about 40 ms a frame at B = 10)
+  bool withError;            // run the double reference too (about 40 ms a frame at B = 10)
   bool onReference = false;  // on the reference path (registered once, labelled so)
 };
 
@@ -98,7 +98,9 @@ Model model(ContactModel kind, int substeps, int iterations, bool withError = fa
   Model m{kind == ContactModel::kSoftStep    ? "soft_step"
           : kind == ContactModel::kBaumgarte ? "baumgarte"
                                              : "projection",
-          {}, withError, onReference};
+          {},
+          withError,
+          onReference};
   m.settings.model = kind, m.settings.substeps = substeps, m.settings.iterations = iterations;
   m.name += "_s" + std::to_string(substeps) + "_i" + std::to_string(iterations);
   return m;

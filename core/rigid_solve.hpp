@@ -23,14 +23,44 @@ struct SolverBody {
 // kPoint + k * kPointFields. A lane past a colour's contacts (padding) joins the static dummy to
 // itself with zero masses and impulses, so it changes nothing.
 struct ContactRows {
-  enum : std::size_t { nx, ny, nz, t1x, t1y, t1z, t2x, t2y, t2z, friction, restitution,
-                       biasRate, massScale, impulseScale, kPoint };
-  enum : std::size_t { rAx, rAy, rAz, rBx, rBy, rBz, base, normalMass, tangentMass1,
-                       tangentMass2, normalImpulse, tangent1, tangent2, maxNormal, relative,
-                       kPointFields };
+  enum : std::size_t {
+    nx,
+    ny,
+    nz,
+    t1x,
+    t1y,
+    t1z,
+    t2x,
+    t2y,
+    t2z,
+    friction,
+    restitution,
+    biasRate,
+    massScale,
+    impulseScale,
+    kPoint
+  };
+  enum : std::size_t {
+    rAx,
+    rAy,
+    rAz,
+    rBx,
+    rBy,
+    rBz,
+    base,
+    normalMass,
+    tangentMass1,
+    tangentMass2,
+    normalImpulse,
+    tangent1,
+    tangent2,
+    maxNormal,
+    relative,
+    kPointFields
+  };
   static constexpr std::size_t kFields = kPoint + 4 * kPointFields;
   float* f[kFields];
-  const std::uint32_t *a, *b;  // the bodies of each lane (b: the dummy for an obstacle)
+  const std::uint32_t *a, *b;       // the bodies of each lane (b: the dummy for an obstacle)
   const std::uint32_t* batchBegin;  // batches + 1 lane offsets, each a multiple of kStreamPad
   std::size_t batches;
 };

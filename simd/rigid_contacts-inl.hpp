@@ -54,7 +54,8 @@ struct LaneBodies {
     for (int k = 0; k < 4; ++k)
       dq[k] = motion ? field(offsetof(core::SolverBody, dq) / 4 + std::size_t(k)) : Zero(d);
     invMass = field(offsetof(core::SolverBody, invMass) / 4);
-    for (int k = 0; k < 6; ++k) inertia[k] = field(offsetof(core::SolverBody, invInertia) / 4 + std::size_t(k));
+    for (int k = 0; k < 6; ++k)
+      inertia[k] = field(offsetof(core::SolverBody, invInertia) / 4 + std::size_t(k));
   }
   void store(D d, core::SolverBody* bodies) const {
     float* base = reinterpret_cast<float*>(bodies);
@@ -78,11 +79,6 @@ struct LaneBodies {
     const Vec3L<V> u = cross<D>(q, t);
     return u + u;
   }
-};
-
-template <class V>
-struct PointLanes {
-  Vec3L<V> rA, rB;
 };
 
 template <class D, class V = LaneOf<D>>
@@ -125,7 +121,8 @@ void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
                    t2 = load3(d, rows.f, R::t2x, lane);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
+                     rB = load3(d, rows.f, p + R::rBx, lane);
       const Vec3L<V> P = n * Load(d, rows.f[p + R::normalImpulse] + lane) +
                          t1 * Load(d, rows.f[p + R::tangent1] + lane) +
                          t2 * Load(d, rows.f[p + R::tangent2] + lane);
@@ -156,7 +153,8 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
     for (std::size_t j = 0; j < 4; ++j) {
       const std::size_t k = pass.reverse ? 3 - j : j;
       const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
+                     rB = load3(d, rows.f, p + R::rBx, lane);
       const Vec3L<V> moved = (b.dp + b.turned(rB)) - (a.dp + a.turned(rA));
       const V sep = Load(d, rows.f[p + R::base] + lane) + dot(moved, n);
       V bias = zero, ms = one, is = zero;
@@ -179,7 +177,8 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
       float* maxNormal = rows.f[p + R::maxNormal] + lane;
       Store(Max(Load(d, maxNormal), impulse), d, maxNormal);
       float* relative = rows.f[p + R::relative] + lane;
-      Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d, relative);
+      Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d,
+            relative);
       applyImpulse(a, b, rA, rB, n * impulse);
     }
     const Vec3L<V> t[2] = {load3(d, rows.f, R::t1x, lane), load3(d, rows.f, R::t2x, lane)};
@@ -187,14 +186,15 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
     for (std::size_t j = 0; j < 4; ++j) {
       const std::size_t k = pass.reverse ? 3 - j : j;
       const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
+                     rB = load3(d, rows.f, p + R::rBx, lane);
       const V limit = friction * Load(d, rows.f[p + R::normalImpulse] + lane);
       for (std::size_t i = 0; i < 2; ++i) {
         const V vt = relativeAlong(a, b, rA, rB, t[i]);
         float* accumulated = rows.f[p + R::tangent1 + i] + lane;
         const V old = Load(d, accumulated);
-        const V total = Min(Max(old - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt,
-                                Neg(limit)), limit);
+        const V total =
+            Min(Max(old - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt, Neg(limit)), limit);
         Store(total, d, accumulated);
         applyImpulse(a, b, rA, rB, t[i] * (total - old));
       }
@@ -217,11 +217,12 @@ void restitutionT(D d, const core::ContactRows& rows, core::SolverBody* bodies, 
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
       const V relative = Load(d, rows.f[p + R::relative] + lane);
-      const auto active = And(Not(Eq(e, zero)),
-                              And(Le(relative, minusThreshold),
-                                  Not(Eq(Load(d, rows.f[p + R::maxNormal] + lane), zero))));
+      const auto active =
+          And(Not(Eq(e, zero)), And(Le(relative, minusThreshold),
+                                    Not(Eq(Load(d, rows.f[p + R::maxNormal] + lane), zero))));
       if (AllFalse(d, active)) continue;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane), rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
+                     rB = load3(d, rows.f, p + R::rBx, lane);
       const V vn = relativeAlong(a, b, rA, rB, n);
       float* accumulated = rows.f[p + R::normalImpulse] + lane;
       const V old = Load(d, accumulated);

@@ -46,8 +46,7 @@ std::vector<Vec3f> positions(const World& world) {
 
 double largestDifference(const std::vector<Vec3f>& a, const std::vector<Vec3f>& b) {
   double worst = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    worst = std::max(worst, double((a[i] - b[i]).norm()));
+  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, double((a[i] - b[i]).norm()));
   return worst;
 }
 

@@ -12,7 +12,7 @@
 
 namespace simdphys::workloads {
 
-inline constexpr int kPyramidFrames = 600;               // 10 s at 60 Hz
+inline constexpr int kPyramidFrames = 600;                // 10 s at 60 Hz
 inline constexpr float kPyramidFrameTime = 1.0f / 60.0f;  // s
 inline constexpr int kPyramidBases[] = {10, 20};          // B: 385 and 2,870 boxes
 inline constexpr float kPyramidHalf = 0.5f;               // every box's half extent, m

@@ -57,7 +57,7 @@ const char* toString(ContactModel model);
 struct BodyDef {
   BodyShape shape = BodyShape::kBox;
   Vec3f halfExtents{0.5f, 0.5f, 0.5f};  // a box's, m, each > 0
-  float radius = 0.5f;                   // a sphere's, m, > 0
+  float radius = 0.5f;                  // a sphere's, m, > 0
   Vec3f position = Vec3f::Zero();
   Quatf orientation = Quatf::Identity();  // unit within 1e-3 (normalised on entry)
   Vec3f velocity = Vec3f::Zero();         // m/s
@@ -82,11 +82,11 @@ struct RigidSettings {
   // contact is a spring of the point's effective mass times (2 pi hertz)^2, too weak for the
   // column's weight: docs/rigid.md), at 60 it stands, and W5's pyramid sinks half as far.
   float contactHertz = 60.0f, contactDampingRatio = 10.0f, maxPushSpeed = 3.0f;
-  float baumgarte = 0.2f;    // kBaumgarte: the fraction of the penetration removed a step, (0, 1]
-  float projection = 0.45f;  // kProjection: the fraction moved apart a step (the book's), (0, 1]
-  float linearSlop = 0.005f;           // m: penetration left uncorrected, so contacts persist
-  float speculativeDistance = 0.02f;   // m: contacts are made this far before bodies touch
-  float restitutionThreshold = 1.0f;   // m/s: slower impacts do not bounce
+  float baumgarte = 0.2f;     // kBaumgarte: the fraction of the penetration removed a step, (0, 1]
+  float projection = 0.45f;   // kProjection: the fraction moved apart a step (the book's), (0, 1]
+  float linearSlop = 0.005f;  // m: penetration left uncorrected, so contacts persist
+  float speculativeDistance = 0.02f;  // m: contacts are made this far before bodies touch
+  float restitutionThreshold = 1.0f;  // m/s: slower impacts do not bounce
   float linearDamping = 0.0f, angularDamping = 0.0f;  // 1/s, >= 0
   bool warmStarting = true;
   // Sleeping (Box2D's): an island (bodies joined by contacts) whose bodies have all moved slower

@@ -99,8 +99,38 @@ struct Particle {
 // Padding: zeros, inverse mass 0, which no step moves.
 struct Body {
   enum : std::size_t {
-    x, y, z, qx, qy, qz, qw, vx, vy, vz, wx, wy, wz, invMass, invIx, invIy, invIz,
-    shape, ex, ey, ez, friction, restitution, fx, fy, fz, tx, ty, tz, sleepTime, island, kCount
+    x,
+    y,
+    z,
+    qx,
+    qy,
+    qz,
+    qw,
+    vx,
+    vy,
+    vz,
+    wx,
+    wy,
+    wz,
+    invMass,
+    invIx,
+    invIy,
+    invIz,
+    shape,
+    ex,
+    ey,
+    ez,
+    friction,
+    restitution,
+    fx,
+    fy,
+    fz,
+    tx,
+    ty,
+    tz,
+    sleepTime,
+    island,
+    kCount
   };
   static constexpr float kPad[kCount] = {};
 };

@@ -36,7 +36,8 @@ void validate(const RigidSettings& s, const std::string& where) {
   positive(s.contactHertz, "contactHertz", 1e6f);
   positive(s.contactDampingRatio, "contactDampingRatio", 1e6f);
   positive(s.maxPushSpeed, "maxPushSpeed", 1e6f);
-  require(s.baumgarte > 0 && s.baumgarte <= 1, s.baumgarte, where, "baumgarte", "must be in (0, 1]");
+  require(s.baumgarte > 0 && s.baumgarte <= 1, s.baumgarte, where, "baumgarte",
+          "must be in (0, 1]");
   require(s.projection > 0 && s.projection <= 1, s.projection, where, "projection",
           "must be in (0, 1]");
   const auto nonNegative = [&](float x, const char* field) {
@@ -98,7 +99,9 @@ Handle RigidBodies::add(const BodyDef& d) {
   if (d.shape == BodyShape::kBox) {
     for (int k = 0; k < 3; ++k)
       require(d.halfExtents[k] > 0 && d.halfExtents[k] <= 1e6f, d.halfExtents[k], where,
-              k == 0 ? "halfExtents.x" : k == 1 ? "halfExtents.y" : "halfExtents.z",
+              k == 0   ? "halfExtents.x"
+              : k == 1 ? "halfExtents.y"
+                       : "halfExtents.z",
               "must be in (0, 1e6] m");
     half = d.halfExtents;
   } else {
@@ -118,19 +121,45 @@ Handle RigidBodies::add(const BodyDef& d) {
   const float invMass = d.kinematic ? 0.0f : 1.0f / d.mass;
   if (!d.kinematic) {
     const Vec3d h = half.cast<double>(), h2 = h.cwiseProduct(h);
-    const Vec3d inertia = d.shape == BodyShape::kBox
-                              ? Vec3d(Vec3d(h2.y() + h2.z(), h2.x() + h2.z(), h2.x() + h2.y()) *
-                                      (double(d.mass) / 3))
-                              : Vec3d(Vec3d::Constant(0.4 * double(d.mass) * h2.x()));
+    const Vec3d inertia =
+        d.shape == BodyShape::kBox
+            ? Vec3d(Vec3d(h2.y() + h2.z(), h2.x() + h2.z(), h2.x() + h2.y()) * (double(d.mass) / 3))
+            : Vec3d(Vec3d::Constant(0.4 * double(d.mass) * h2.x()));
     invInertia = inertia.cwiseInverse().cast<float>();
     require(invInertia.allFinite(), d.mass, where, "mass", "gives an inertia out of range");
   }
   const Quatf q = d.orientation.normalized();
-  append({d.position.x(), d.position.y(), d.position.z(), q.x(), q.y(), q.z(), q.w(),
-          d.velocity.x(), d.velocity.y(), d.velocity.z(), d.angularVelocity.x(),
-          d.angularVelocity.y(), d.angularVelocity.z(), invMass, invInertia.x(), invInertia.y(),
-          invInertia.z(), float(shape), half.x(), half.y(), half.z(), d.friction, d.restitution,
-          0, 0, 0, 0, 0, 0, 0, 0});
+  append({d.position.x(),
+          d.position.y(),
+          d.position.z(),
+          q.x(),
+          q.y(),
+          q.z(),
+          q.w(),
+          d.velocity.x(),
+          d.velocity.y(),
+          d.velocity.z(),
+          d.angularVelocity.x(),
+          d.angularVelocity.y(),
+          d.angularVelocity.z(),
+          invMass,
+          invInertia.x(),
+          invInertia.y(),
+          invInertia.z(),
+          float(shape),
+          half.x(),
+          half.y(),
+          half.z(),
+          d.friction,
+          d.restitution,
+          0,
+          0,
+          0,
+          0,
+          0,
+          0,
+          0,
+          0});
   return handles_.add();
 }
 
@@ -168,8 +197,12 @@ std::size_t RigidBodies::awakeCount() const {
   return n;
 }
 
-Vec3f RigidBodies::position(Handle h) const { return loadVec(F::Body::x, require(h, "RigidBodies::position")); }
-Vec3f RigidBodies::velocity(Handle h) const { return loadVec(F::Body::vx, require(h, "RigidBodies::velocity")); }
+Vec3f RigidBodies::position(Handle h) const {
+  return loadVec(F::Body::x, require(h, "RigidBodies::position"));
+}
+Vec3f RigidBodies::velocity(Handle h) const {
+  return loadVec(F::Body::vx, require(h, "RigidBodies::velocity"));
+}
 Vec3f RigidBodies::angularVelocity(Handle h) const {
   return loadVec(F::Body::wx, require(h, "RigidBodies::angularVelocity"));
 }
@@ -227,8 +260,8 @@ void RigidBodies::applyImpulse(Handle h, const Vec3f& impulse, const Vec3f& poin
   const Mat3f R = orientation(h).toRotationMatrix();
   const Mat3f invInertia = R * loadVec(F::Body::invIx, i).asDiagonal() * R.transpose();
   const Vec3f v = loadVec(F::Body::vx, i) + invMass * impulse;
-  const Vec3f w = loadVec(F::Body::wx, i) +
-                  invInertia * (point - loadVec(F::Body::x, i)).cross(impulse);
+  const Vec3f w =
+      loadVec(F::Body::wx, i) + invInertia * (point - loadVec(F::Body::x, i)).cross(impulse);
   detail::requireFiniteField(v, where, "resulting velocity");
   detail::requireFiniteField(w, where, "resulting angular velocity");
   wake(i);

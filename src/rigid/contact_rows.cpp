@@ -90,7 +90,8 @@ void KernelPasses::toRecords(const std::vector<SolverBodyT<float>>& bodies) {
 
 void KernelPasses::fromRecords(std::vector<SolverBodyT<float>>& bodies) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
-    for (int k = 0; k < 3; ++k) bodies[i].v[k] = records_[i].v[k], bodies[i].w[k] = records_[i].w[k];
+    for (int k = 0; k < 3; ++k)
+      bodies[i].v[k] = records_[i].v[k], bodies[i].w[k] = records_[i].w[k];
 }
 
 void KernelPasses::warmStart(std::vector<ContactConstraintT<float>>&,

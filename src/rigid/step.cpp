@@ -5,8 +5,8 @@
 
 #include "src/core/on_path.hpp"
 #include "src/reference/rigid/step-inl.hpp"
-#include "src/rigid/contact_rows.hpp"
 #include "src/reference/validate-inl.hpp"
+#include "src/rigid/contact_rows.hpp"
 
 namespace simdphys {
 
@@ -22,8 +22,8 @@ std::vector<detail::BodyT<T>> Internals::load(const RigidBodies& r) {
   for (std::size_t i = 0; i < r.size(); ++i) {
     detail::BodyT<T>& b = out[i];
     b.x = vec(F::Body::x, i), b.v = vec(F::Body::vx, i), b.w = vec(F::Body::wx, i);
-    b.q = Quat<T>(T(r.value(F::Body::qw, i)), T(r.value(F::Body::qx, i)), T(r.value(F::Body::qy, i)),
-                  T(r.value(F::Body::qz, i)));
+    b.q = Quat<T>(T(r.value(F::Body::qw, i)), T(r.value(F::Body::qx, i)),
+                  T(r.value(F::Body::qy, i)), T(r.value(F::Body::qz, i)));
     b.invMass = T(r.value(F::Body::invMass, i));
     b.invInertia = vec(F::Body::invIx, i);
     b.shape = BodyShape(int(r.value(F::Body::shape, i)));
@@ -31,7 +31,6 @@ std::vector<detail::BodyT<T>> Internals::load(const RigidBodies& r) {
     b.friction = T(r.value(F::Body::friction, i));
     b.restitution = T(r.value(F::Body::restitution, i));
     b.force = vec(F::Body::fx, i), b.torque = vec(F::Body::tx, i);
-    b.kinematic = b.invMass == 0;
     b.sleepTime = T(r.value(F::Body::sleepTime, i));
     b.island = std::uint32_t(r.value(F::Body::island, i));
   }
@@ -82,9 +81,9 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
   // The contact passes on the active path: the reference on Eigen, or the kernels over rows
   // (or their plain loops), the rest of the step shared.
   const RigidStepStats stats =
-      referencePathActive()
-          ? stepState(state, slots, cache, obstacles, bodies.settings(), dt)
-          : stepState(state, slots, cache, obstacles, bodies.settings(), dt, kernelPasses(state.size()));
+      referencePathActive() ? stepState(state, slots, cache, obstacles, bodies.settings(), dt)
+                            : stepState(state, slots, cache, obstacles, bodies.settings(), dt,
+                                        kernelPasses(state.size()));
   // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
   for (std::size_t i = 0; i < state.size(); ++i) {
     const std::string body = where + ": body " + std::to_string(i);

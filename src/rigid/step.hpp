@@ -25,7 +25,8 @@ namespace detail {
 
 // One step of dt. Throws Error naming `where` and the body, with nothing moved, if a body would
 // leave the supported range or its state stop being finite.
-void stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt, const std::string& where);
+void stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt,
+                const std::string& where);
 
 }  // namespace detail
 }  // namespace simdphys

@@ -7,8 +7,8 @@
 
 #include "src/cloth/step.hpp"
 #include "src/particles/step.hpp"
-#include "src/rigid/step.hpp"
 #include "src/reference/validate-inl.hpp"
+#include "src/rigid/step.hpp"
 #include "src/world/obstacle_rows.hpp"
 
 namespace simdphys {

@@ -22,7 +22,6 @@ struct BodyT {
   Vec3<T> half;  // box half extents; half.x() is a sphere's radius
   T friction, restitution;
   Vec3<T> force, torque;
-  bool kinematic;
   T sleepTime;
   std::uint32_t island;  // while asleep, its island's id + 1; 0 awake
 
@@ -45,7 +44,7 @@ struct SolverBodyT {
 template <class T>
 struct ContactPointConstraintT {
   Vec3<T> rA = Vec3<T>::Zero(), rB = Vec3<T>::Zero();  // anchors from the bodies' centres
-  T baseSeparation = 0;                                  // at the step's start
+  T baseSeparation = 0;                                // at the step's start
   T normalMass = 0, tangentMass[2] = {0, 0};
   T normalImpulse = 0, tangentImpulse[2] = {0, 0}, maxNormalImpulse = 0;
   T relativeVelocity = 0;  // normal velocity at the step's start, for restitution
@@ -63,13 +62,6 @@ struct ContactConstraintT {
   int count;
   std::array<ContactPointConstraintT<T>, 4> points;
 };
-
-template <class T>
-Mat3<T> skew(const Vec3<T>& v) {
-  Mat3<T> m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
 
 // Two unit vectors completing the normal to a right-handed basis, a function of the normal
 // alone, so a resting contact's tangents (and warm-started friction) stay put between steps.

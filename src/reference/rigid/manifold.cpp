@@ -4,11 +4,11 @@
 
 namespace simdphys {
 
-#define SIMDPHYS_MANIFOLDS(T)                                                \
-  template ManifoldT<T> collide(const SphereT<T>&, const SphereT<T>&, T);    \
-  template ManifoldT<T> collide(const SphereT<T>&, const ObbT<T>&, T);       \
-  template ManifoldT<T> collide(const ObbT<T>&, const ObbT<T>&, T);          \
-  template ManifoldT<T> collide(const SphereT<T>&, const PlaneT<T>&, T);     \
+#define SIMDPHYS_MANIFOLDS(T)                                             \
+  template ManifoldT<T> collide(const SphereT<T>&, const SphereT<T>&, T); \
+  template ManifoldT<T> collide(const SphereT<T>&, const ObbT<T>&, T);    \
+  template ManifoldT<T> collide(const ObbT<T>&, const ObbT<T>&, T);       \
+  template ManifoldT<T> collide(const SphereT<T>&, const PlaneT<T>&, T);  \
   template ManifoldT<T> collide(const ObbT<T>&, const PlaneT<T>&, T);
 SIMDPHYS_MANIFOLDS(float)
 SIMDPHYS_MANIFOLDS(double)

@@ -75,10 +75,9 @@ inline bool mayTouch(const ObstacleShape& shape, const Aabb& body) {
 // Appends the constraint of manifold m between bodies a and b (b = the static dummy for an
 // obstacle), its anchors from the points, its impulses zero.
 template <class T>
-void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& m,
-                   std::uint32_t a, std::uint32_t b, const Vec3<T>& centerA,
-                   const Vec3<T>& centerB, T friction, T restitution, bool isStatic,
-                   std::uint64_t key) {
+void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& m, std::uint32_t a,
+                   std::uint32_t b, const Vec3<T>& centerA, const Vec3<T>& centerB, T friction,
+                   T restitution, bool isStatic, std::uint64_t key) {
   if (m.count == 0) return;
   ContactConstraintT<T>& c = out.emplace_back();
   c.a = a, c.b = b, c.key = key, c.normal = m.normal, c.friction = friction;
@@ -150,9 +149,8 @@ std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& co
 // two may close within dt.
 template <class T>
 void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vector<BodyT<T>>& bodies,
-                                                std::span<const std::uint32_t> slots,
-                                                const Obstacles& obstacles,
-                                                const RigidSettings& s, T dt, T& deepest) {
+                  std::span<const std::uint32_t> slots, const Obstacles& obstacles,
+                  const RigidSettings& s, T dt, T& deepest) {
   const auto n = std::uint32_t(bodies.size());
   const std::uint32_t dummy = n;
   BoxStream bounds;
@@ -163,8 +161,10 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
     travel[i] = bodies[i].v.norm() * dt;
     const Vec3<T> r = reach(bodies[i]).array() + T(s.speculativeDistance) / 2 + travel[i];
     // Rounded outward to float: the grown box covers the body in either precision.
-    const Vec3f lo = (bodies[i].x - r).template cast<float>().array() - 1e-4f * (1 + r.template cast<float>().array());
-    const Vec3f hi = (bodies[i].x + r).template cast<float>().array() + 1e-4f * (1 + r.template cast<float>().array());
+    const Vec3f lo = (bodies[i].x - r).template cast<float>().array() -
+                     1e-4f * (1 + r.template cast<float>().array());
+    const Vec3f hi = (bodies[i].x + r).template cast<float>().array() +
+                     1e-4f * (1 + r.template cast<float>().array());
     boxes[i] = {lo, hi};
     bounds.push(boxes[i]);
   }
@@ -185,12 +185,12 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
             [](const auto& l, const auto& r) { return l.first < r.first; });
   deepest = 0;
   const auto record = [&](const ManifoldT<T>& m) {
-    for (int i = 0; i < m.count; ++i) deepest = std::max(deepest, -m.points[std::size_t(i)].separation);
+    for (int i = 0; i < m.count; ++i)
+      deepest = std::max(deepest, -m.points[std::size_t(i)].separation);
   };
   for (const auto& [key, p] : keyed) {
     const BodyT<T>&a = bodies[p.a], &b = bodies[p.b];
-    const ManifoldT<T> m =
-        collideBody(a, b, T(s.speculativeDistance) + travel[p.a] + travel[p.b]);
+    const ManifoldT<T> m = collideBody(a, b, T(s.speculativeDistance) + travel[p.a] + travel[p.b]);
     record(m);
     addConstraint(contacts, m, p.a, p.b, a.x, b.x, std::sqrt(a.friction * b.friction),
                   std::max(a.restitution, b.restitution), false, key);
@@ -205,8 +205,9 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
           collideObstacle(bodies[i], shapes[o], T(s.speculativeDistance) + travel[i]);
       record(m);
       // Obstacles carry the world's friction of the body (W5: 0.6 on every contact).
-      addConstraint(contacts, m, i, dummy, bodies[i].x, Vec3<T>(Vec3<T>::Zero()), bodies[i].friction,
-                    bodies[i].restitution, true, pairKey(slots[i], kObstacleBit | o));
+      addConstraint(contacts, m, i, dummy, bodies[i].x, Vec3<T>(Vec3<T>::Zero()),
+                    bodies[i].friction, bodies[i].restitution, true,
+                    pairKey(slots[i], kObstacleBit | o));
     }
   }
 }

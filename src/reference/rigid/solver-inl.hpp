@@ -32,11 +32,6 @@ struct SolveParams {
 };
 
 template <class T>
-Vec3<T> inverseInertiaTimes(const SolverBodyT<T>& b, const Vec3<T>& x) {
-  return b.invInertia * x;
-}
-
-template <class T>
 void applyImpulse(SolverBodyT<T>& a, SolverBodyT<T>& b, const Vec3<T>& rA, const Vec3<T>& rB,
                   const Vec3<T>& P) {
   a.v -= a.invMass * P, a.w -= a.invInertia * rA.cross(P);

@@ -23,8 +23,9 @@ template <class T>
 void warmStartFrom(const std::vector<CachedManifoldT<T>>& cache,
                    std::vector<ContactConstraintT<T>>& contacts) {
   for (ContactConstraintT<T>& c : contacts) {
-    const auto it = std::lower_bound(cache.begin(), cache.end(), c.key,
-                                     [](const CachedManifoldT<T>& m, std::uint64_t k) { return m.key < k; });
+    const auto it =
+        std::lower_bound(cache.begin(), cache.end(), c.key,
+                         [](const CachedManifoldT<T>& m, std::uint64_t k) { return m.key < k; });
     if (it == cache.end() || it->key != c.key) continue;
     for (int i = 0; i < c.count; ++i)
       for (int j = 0; j < it->count; ++j)
@@ -97,7 +98,8 @@ void integratePositions(const std::vector<BodyT<T>>& bodies, std::vector<SolverB
       return Vec3<T>(q * Vec3<T>(body.invInertia.cwiseProduct(q.conjugate() * L)));
     };
     const Quat<T> was = b.dq * body.q;
-    const Vec3<T> L = was * Vec3<T>(body.invInertia.cwiseInverse().cwiseProduct(was.conjugate() * b.w));
+    const Vec3<T> L =
+        was * Vec3<T>(body.invInertia.cwiseInverse().cwiseProduct(was.conjugate() * b.w));
     const Vec3<T> mid = rate(turned(was, Vec3<T>(T(0.5) * h * b.w)), L);
     b.dq = turned(b.dq, Vec3<T>(h * mid));
     b.w = rate(b.dq * body.q, L);
@@ -128,8 +130,8 @@ void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> s
     BodyT<T>& b = bodies[i];
     if (!awakeDynamic(std::uint32_t(i))) continue;
     const T reach = b.shape == BodyShape::kSphere ? b.half.x() : b.half.norm();
-    const bool still = b.v.norm() + reach * b.w.norm() <= tolerance &&
-                       b.force.squaredNorm() == 0 && b.torque.squaredNorm() == 0;
+    const bool still = b.v.norm() + reach * b.w.norm() <= tolerance && b.force.squaredNorm() == 0 &&
+                       b.torque.squaredNorm() == 0;
     b.sleepTime = still ? b.sleepTime + dt : T(0);
   }
   // Islands of awake dynamic bodies joined by contacts (union-find), each the stillness of its
