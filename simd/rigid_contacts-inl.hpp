@@ -188,16 +188,22 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
       const std::size_t p = R::kPoint + k * R::kPointFields;
       const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
                      rB = load3(d, rows.f, p + R::rBx, lane);
+      // The reference's cone clamp (solver-inl.hpp), in the same order of operations.
       const V limit = friction * Load(d, rows.f[p + R::normalImpulse] + lane);
+      V old[2], total[2];
       for (std::size_t i = 0; i < 2; ++i) {
         const V vt = relativeAlong(a, b, rA, rB, t[i]);
-        float* accumulated = rows.f[p + R::tangent1 + i] + lane;
-        const V old = Load(d, accumulated);
-        const V total =
-            Min(Max(old - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt, Neg(limit)), limit);
-        Store(total, d, accumulated);
-        applyImpulse(a, b, rA, rB, t[i] * (total - old));
+        old[i] = Load(d, rows.f[p + R::tangent1 + i] + lane);
+        total[i] = old[i] - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt;
       }
+      const V squared = total[0] * total[0] + total[1] * total[1];
+      const auto over = Gt(squared, limit * limit);  // then squared > 0
+      const V scale = limit / Sqrt(IfThenElse(over, squared, Set(d, 1.0f)));
+      for (std::size_t i = 0; i < 2; ++i) {
+        total[i] = IfThenElse(over, total[i] * scale, total[i]);
+        Store(total[i], d, rows.f[p + R::tangent1 + i] + lane);
+      }
+      applyImpulse(a, b, rA, rB, t[0] * (total[0] - old[0]) + t[1] * (total[1] - old[1]));
     }
     a.store(d, bodies);
     b.store(d, bodies);

@@ -123,15 +123,23 @@ void solveContacts(std::vector<ContactConstraintT<T>>& contacts,
     }
     for (int k = 0; k < c.count; ++k) {
       ContactPointConstraintT<T>& p = c.points[std::size_t(reverse ? c.count - 1 - k : k)];
+      // Both directions from the same velocity, then the total clamped to the Coulomb cone
+      // (|f| <= mu * normal, Jolt's), not each direction to its own limit: that square would
+      // let friction reach sqrt(2) mu * normal on a diagonal slide.
       const T limit = c.friction * p.normalImpulse;
-      for (int j = 0; j < 2; ++j) {
-        const T vt = relativeVelocity(a, b, p.rA, p.rB).dot(c.tangent[j]);
-        T impulse = -p.tangentMass[j] * vt;
-        const T total = std::clamp(p.tangentImpulse[j] + impulse, -limit, limit);
-        impulse = total - p.tangentImpulse[j];
-        p.tangentImpulse[j] = total;
-        applyImpulse(a, b, p.rA, p.rB, Vec3<T>(impulse * c.tangent[j]));
+      const Vec3<T> dv = relativeVelocity(a, b, p.rA, p.rB);
+      T total[2];
+      for (int j = 0; j < 2; ++j)
+        total[j] = p.tangentImpulse[j] - p.tangentMass[j] * dv.dot(c.tangent[j]);
+      const T squared = total[0] * total[0] + total[1] * total[1];
+      if (squared > limit * limit) {
+        const T scale = limit / std::sqrt(squared);
+        total[0] *= scale, total[1] *= scale;
       }
+      const Vec3<T> impulse = (total[0] - p.tangentImpulse[0]) * c.tangent[0] +
+                              (total[1] - p.tangentImpulse[1]) * c.tangent[1];
+      p.tangentImpulse[0] = total[0], p.tangentImpulse[1] = total[1];
+      applyImpulse(a, b, p.rA, p.rB, impulse);
     }
   }
 }
