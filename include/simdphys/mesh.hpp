@@ -32,6 +32,16 @@ struct Mesh {
   Aabb bounds() const;
 };
 
+// Which triangle edges a body resting on the mesh may meet as edges (Jolt's active edges,
+// Bullet's btInternalEdgeUtility): bit e of triangle i is set when its edge from vertex e to
+// vertex e + 1 is on the boundary, shared by more than two triangles, or a convex crease (the
+// neighbour falls away behind the triangle's plane) sharper than kActiveEdgeCosine between the
+// two normals. Edges inside a flat or concave region are inactive: a box sliding over them meets
+// the faces only, never a ghost edge between two coplanar triangles. Edges are matched by their
+// vertex indices (a mesh that repeats a vertex is not welded).
+inline constexpr float kActiveEdgeCosine = 0.999f;  // about 2.6 degrees
+std::vector<std::uint8_t> activeEdges(const Mesh& mesh);
+
 // A heightfield of columns x rows vertices over [x0, x1] x [z0, z1]: vertex (i, j) (i along x, j
 // along z) has index j * columns + i, x = x0 + (x1 - x0) * i / (columns - 1) and likewise z (both
 // computed in double, rounded once), y = height(x, z) with the rounded x and z, rounded once.

@@ -16,6 +16,8 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -104,6 +106,10 @@ class MeshBvh {
   std::vector<std::uint32_t> overlapping(const Triangle& triangle) const;
 
   const Mesh& mesh() const { return mesh_; }
+  // activeEdges(mesh()) (mesh.hpp): what rigid bodies colliding with the mesh read. Computed on
+  // the first call (thread-safe; it takes about as long as building the tree, which rays alone
+  // never pay) and again on the first call after a refit.
+  std::span<const std::uint8_t> activeEdges() const;
   const Bvh& bvh() const { return bvh_; }
   std::span<const TriangleBlock> blocks() const { return blocks_; }
 
@@ -115,6 +121,17 @@ class MeshBvh {
   Mesh mesh_;
   Bvh bvh_;
   AlignedVector<TriangleBlock> blocks_;
+  // activeEdges()'s, once; a copy computes its own when asked.
+  struct LazyActiveEdges {
+    std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
+    std::vector<std::uint8_t> bits;
+    LazyActiveEdges() = default;
+    LazyActiveEdges(const LazyActiveEdges&) : LazyActiveEdges() {}
+    LazyActiveEdges(LazyActiveEdges&&) = default;
+    LazyActiveEdges& operator=(const LazyActiveEdges&) { return *this = LazyActiveEdges(); }
+    LazyActiveEdges& operator=(LazyActiveEdges&&) = default;
+  };
+  mutable LazyActiveEdges activeEdges_;
   float extent_ = 0;  // twice the largest |coordinate|: the overlap queries' tolerance scale
 };
 

@@ -39,10 +39,12 @@ namespace simdphys {
 namespace detail {
 // A manifold's accumulated impulses kept from one step to the next for warm starting (the
 // appendix's arbiters), found by key (the pair's handle slots, which stay while bodies live)
-// and each point by its feature id.
+// and each point by its feature id. `sub` names one of a pair's several manifolds (a body against
+// a mesh has one per group of its triangles), else 0.
 template <class T>
 struct CachedManifoldT {
   std::uint64_t key;
+  std::uint32_t sub;
   int count;
   std::uint32_t id[4];
   T impulse[4][3];  // normal, tangent 1, tangent 2

@@ -1,8 +1,10 @@
 // Mesh validation and the procedural meshes.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "simdphys/geometry3d/raycast.hpp"  // triangleNormalWide: the raycast's degeneracy test
 #include "simdphys/mesh.hpp"
@@ -15,6 +17,49 @@ Aabb Mesh::bounds() const {
   Aabb b{vertices.front(), vertices.front()};
   for (const Vec3f& v : vertices) b.min = b.min.cwiseMin(v), b.max = b.max.cwiseMax(v);
   return b;
+}
+
+std::vector<std::uint8_t> activeEdges(const Mesh& mesh) {
+  // Every edge as (lower vertex, higher vertex, triangle, edge), sorted so the triangles sharing
+  // an edge lie next to each other (deterministic, unlike a hash map's order).
+  struct Edge {
+    std::uint32_t lo, hi, triangle, edge;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(3 * mesh.size());
+  for (std::uint32_t i = 0; i < mesh.size(); ++i)
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t p = mesh.triangles[i][e], q = mesh.triangles[i][(e + 1) % 3];
+      edges.push_back({std::min(p, q), std::max(p, q), i, e});
+    }
+  std::sort(edges.begin(), edges.end(), [](const Edge& l, const Edge& r) {
+    return std::tie(l.lo, l.hi, l.triangle) < std::tie(r.lo, r.hi, r.triangle);
+  });
+  const auto normal = [&](std::uint32_t i) {
+    const Triangle t = mesh.triangle(i);
+    return Vec3d((t.b - t.a).cast<double>().cross((t.c - t.a).cast<double>()).normalized());
+  };
+  std::vector<std::uint8_t> active(mesh.size(), 0);
+  for (std::size_t k = 0; k < edges.size();) {
+    std::size_t end = k + 1;
+    while (end < edges.size() && edges[end].lo == edges[k].lo && edges[end].hi == edges[k].hi)
+      ++end;
+    bool isActive = end - k != 2;  // the boundary, or more than two triangles meet
+    if (!isActive) {
+      const Edge &f = edges[k], &g = edges[k + 1];
+      const Vec3d nf = normal(f.triangle), ng = normal(g.triangle);
+      // g's vertex off the edge, seen from f's plane: behind it (falling away) is convex.
+      const Vec3f off = mesh.vertices[mesh.triangles[g.triangle][(g.edge + 2) % 3]];
+      const Vec3f on = mesh.vertices[f.lo];
+      const bool convex = nf.dot((off - on).cast<double>()) < 0;
+      isActive = convex && nf.dot(ng) < double(kActiveEdgeCosine);
+    }
+    if (isActive)
+      for (std::size_t j = k; j < end; ++j)
+        active[edges[j].triangle] |= std::uint8_t(1u << edges[j].edge);
+    k = end;
+  }
+  return active;
 }
 
 void Mesh::validate(std::string_view where) const {

@@ -266,6 +266,11 @@ MeshBvh::MeshBvh(Mesh mesh) : mesh_(std::move(mesh)) {
   fillBlocks();
 }
 
+std::span<const std::uint8_t> MeshBvh::activeEdges() const {
+  std::call_once(*activeEdges_.once, [this] { activeEdges_.bits = simdphys::activeEdges(mesh_); });
+  return activeEdges_.bits;
+}
+
 void MeshBvh::refit(std::span<const Vec3f> vertices) {
   if (vertices.size() != mesh_.vertices.size())
     throw Error("MeshBvh::refit: " + std::to_string(vertices.size()) + " vertices, the mesh has " +
@@ -275,6 +280,7 @@ void MeshBvh::refit(std::span<const Vec3f> vertices) {
   mesh_.vertices = std::move(moved.vertices);
   bvh_.refit(triangleBounds(mesh_));
   extent_ = extentOf(mesh_);
+  activeEdges_ = LazyActiveEdges();
   fillBlocks();
 }
 

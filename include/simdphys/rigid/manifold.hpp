@@ -69,7 +69,8 @@ using Manifold = ManifoldT<float>;
 using Manifoldd = ManifoldT<double>;
 
 // The manifold of each pair of shapes the rigid bodies need (bodies are spheres and boxes; static
-// obstacles add planes). Compiled for float and double (src/reference/rigid/manifold.cpp).
+// obstacles add planes and the triangles of meshes). Compiled for float and double
+// (src/reference/rigid/manifold.cpp).
 template <class T>
 ManifoldT<T> collide(const SphereT<T>& a, const SphereT<T>& b, T maxSeparation);
 template <class T>
@@ -80,6 +81,23 @@ template <class T>
 ManifoldT<T> collide(const SphereT<T>& a, const PlaneT<T>& b, T maxSeparation);
 template <class T>
 ManifoldT<T> collide(const ObbT<T>& a, const PlaneT<T>& b, T maxSeparation);
+
+// Against one triangle of a mesh, a two-sided surface: the normal points from the shape to the
+// triangle on whichever side the shape is. Sphere: its centre's closest point on the triangle.
+// Box: the separating axis test over 13 axes (the triangle's normal, the box's 3 face normals, the
+// 9 cross products of their edges), the triangle's face preferred within the tolerances of
+// box-box, then a face contact (the box's face clipped against the triangle's edges, or the
+// triangle against the box's face) or an edge contact. `activeEdges` (bits 0-2, mesh.hpp's
+// activeEdges): only an active edge of the triangle gives an edge axis, and a box's face axis is
+// taken only where the triangle's features nearest it (an edge, or a vertex and its two edges)
+// include an active edge; otherwise the triangle's face axis is, so a box crossing flat ground
+// made of many triangles never catches on the edges between them (Jolt's active edges). Point ids
+// stay below 1024 (room for the triangle's id above them).
+template <class T>
+ManifoldT<T> collide(const SphereT<T>& a, const TriangleT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const ObbT<T>& a, const TriangleT<T>& b, T maxSeparation,
+                     unsigned activeEdges = 7);
 
 // The same manifold seen from the other shape: the normal reversed, points and ids kept.
 template <class T>

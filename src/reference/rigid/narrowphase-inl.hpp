@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <variant>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "simdphys/broadphase.hpp"
 #include "simdphys/obstacles.hpp"
 #include "src/reference/rigid/bodies-inl.hpp"
+#include "src/reference/rigid/clip-inl.hpp"
 
 namespace simdphys::detail {
 
@@ -53,12 +55,68 @@ ManifoldT<T> collideObstacle(const BodyT<T>& a, const ObstacleShape& shape, T ma
     return against(ObbT<T>{(box.min + box.max) / 2, (box.max - box.min) / 2, Mat3<T>::Identity()});
   }
   if (const auto* o = std::get_if<Obb>(&shape)) return against(cast<T>(*o));
-  return {};  // meshes: not yet met by bodies (docs/rigid.md)
+  return {};  // meshes: collideMesh
+}
+
+// Against a mesh: the manifolds of the triangles the body's grown bounds `box` overlap, those
+// whose normals agree within kActiveEdgeCosine merged into one (near-coincident points, where two
+// triangles share an edge, kept once; then at most four, as box-box keeps them), so a box on flat
+// ground of many triangles has one manifold. emit(manifold, sub) for each, `sub` the lowest id of
+// its triangles (the manifold's name beside the pair's key); point ids are the triangle's id
+// times 1024 plus the triangle manifold's id.
+template <class T, class Emit>
+void collideMesh(const BodyT<T>& body, const MeshBvh& mesh, const Aabb& box, T maxSeparation,
+                 Emit emit) {
+  struct Group {
+    ManifoldT<T> first;
+    std::uint32_t sub;
+    std::array<ContactPointT<T>, 16> points;
+    int n = 0;
+  };
+  std::vector<Group> groups;
+  const T weld = T(1e-3) * body.half.maxCoeff();
+  const std::span<const std::uint8_t> active = mesh.activeEdges();
+  for (const std::uint32_t t : mesh.overlapping(box)) {
+    const TriangleT<T> tri = cast<T>(mesh.mesh().triangle(t));
+    const ManifoldT<T> m = body.shape == BodyShape::kSphere
+                               ? collide(body.sphere(), tri, maxSeparation)
+                               : collide(body.box(), tri, maxSeparation, active[t]);
+    if (m.count == 0) continue;
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
+      return x.first.normal.dot(m.normal) > T(kActiveEdgeCosine);
+    });
+    if (g == groups.end()) g = groups.insert(groups.end(), Group{m, t, {}, 0});
+    for (int i = 0; i < m.count; ++i) {
+      ContactPointT<T> p = m.points[std::size_t(i)];
+      p.id += t * 1024;
+      const bool known = std::any_of(g->points.begin(), g->points.begin() + g->n, [&](auto& q) {
+        return (q.point - p.point).squaredNorm() <= weld * weld;
+      });
+      if (known) continue;
+      if (g->n == int(g->points.size())) {  // full: down to the four that matter so far
+        std::array<int, 4> keep{};
+        std::array<ContactPointT<T>, 16> kept;
+        const int k = keepFour(g->points, g->n, g->first.normal, keep);
+        for (int j = 0; j < k; ++j) kept[std::size_t(j)] = g->points[std::size_t(keep[j])];
+        g->points = kept, g->n = k;
+      }
+      g->points[std::size_t(g->n++)] = p;
+    }
+  }
+  for (Group& g : groups) {
+    std::array<int, 4> keep{};
+    ManifoldT<T> m;
+    m.normal = g.first.normal;
+    m.count = keepFour(g.points, g.n, m.normal, keep);
+    for (int j = 0; j < m.count; ++j) m.points[std::size_t(j)] = g.points[std::size_t(keep[j])];
+    emit(m, g.sub);
+  }
 }
 
 // Bounds of an obstacle for the body test; planes are unbounded.
 inline bool mayTouch(const ObstacleShape& shape, const Aabb& body) {
-  if (std::holds_alternative<Plane>(shape)) return true;
+  if (std::holds_alternative<Plane>(shape) || std::holds_alternative<MeshObstacle>(shape))
+    return true;  // a mesh's own tree answers
   Aabb box;
   if (const auto* s = std::get_if<Sphere>(&shape))
     box = {s->center.array() - s->radius, s->center.array() + s->radius};
@@ -77,10 +135,10 @@ inline bool mayTouch(const ObstacleShape& shape, const Aabb& body) {
 template <class T>
 void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& m, std::uint32_t a,
                    std::uint32_t b, const Vec3<T>& centerA, const Vec3<T>& centerB, T friction,
-                   T restitution, bool isStatic, std::uint64_t key) {
+                   T restitution, bool isStatic, std::uint64_t key, std::uint32_t sub = 0) {
   if (m.count == 0) return;
   ContactConstraintT<T>& c = out.emplace_back();
-  c.a = a, c.b = b, c.key = key, c.normal = m.normal, c.friction = friction;
+  c.a = a, c.b = b, c.key = key, c.sub = sub, c.normal = m.normal, c.friction = friction;
   c.restitution = restitution, c.isStatic = isStatic, c.count = m.count;
   tangentsOf(m.normal, c.tangent);
   for (int i = 0; i < m.count; ++i) {
@@ -201,13 +259,22 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
     if (bodies[i].invMass == 0 || bodies[i].island != 0) continue;
     for (std::uint32_t o = 0; o < shapes.size(); ++o) {
       if (!mayTouch(shapes[o], boxes[i])) continue;
+      const std::uint64_t key = pairKey(slots[i], kObstacleBit | o);
+      if (const auto* mesh = std::get_if<MeshObstacle>(&shapes[o])) {
+        collideMesh(bodies[i], **mesh, boxes[i], T(s.speculativeDistance) + travel[i],
+                    [&](const ManifoldT<T>& m, std::uint32_t sub) {
+                      record(m);
+                      addConstraint(contacts, m, i, dummy, bodies[i].x, Vec3<T>(Vec3<T>::Zero()),
+                                    bodies[i].friction, bodies[i].restitution, true, key, sub);
+                    });
+        continue;
+      }
       const ManifoldT<T> m =
           collideObstacle(bodies[i], shapes[o], T(s.speculativeDistance) + travel[i]);
       record(m);
       // Obstacles carry the world's friction of the body (W5: 0.6 on every contact).
       addConstraint(contacts, m, i, dummy, bodies[i].x, Vec3<T>(Vec3<T>::Zero()),
-                    bodies[i].friction, bodies[i].restitution, true,
-                    pairKey(slots[i], kObstacleBit | o));
+                    bodies[i].friction, bodies[i].restitution, true, key);
     }
   }
 }

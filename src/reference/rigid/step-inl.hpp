@@ -23,10 +23,10 @@ template <class T>
 void warmStartFrom(const std::vector<CachedManifoldT<T>>& cache,
                    std::vector<ContactConstraintT<T>>& contacts) {
   for (ContactConstraintT<T>& c : contacts) {
-    const auto it =
-        std::lower_bound(cache.begin(), cache.end(), c.key,
-                         [](const CachedManifoldT<T>& m, std::uint64_t k) { return m.key < k; });
-    if (it == cache.end() || it->key != c.key) continue;
+    const auto it = std::lower_bound(
+        cache.begin(), cache.end(), std::pair(c.key, c.sub),
+        [](const CachedManifoldT<T>& m, const auto& k) { return std::pair(m.key, m.sub) < k; });
+    if (it == cache.end() || it->key != c.key || it->sub != c.sub) continue;
     for (int i = 0; i < c.count; ++i)
       for (int j = 0; j < it->count; ++j)
         if (it->id[j] == c.points[std::size_t(i)].id) {
@@ -43,7 +43,7 @@ void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
                   std::vector<CachedManifoldT<T>>& cache) {
   cache.clear();
   for (const ContactConstraintT<T>& c : contacts) {
-    CachedManifoldT<T> m{c.key, c.count, {}, {}};
+    CachedManifoldT<T> m{c.key, c.sub, c.count, {}, {}};
     for (int i = 0; i < c.count; ++i) {
       const ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
       m.id[i] = p.id;
@@ -53,7 +53,9 @@ void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
     }
     cache.push_back(m);
   }
-  std::sort(cache.begin(), cache.end(), [](const auto& l, const auto& r) { return l.key < r.key; });
+  std::sort(cache.begin(), cache.end(), [](const auto& l, const auto& r) {
+    return std::pair(l.key, l.sub) < std::pair(r.key, r.sub);
+  });
 }
 
 // Gravity, forces and damping.
