@@ -10,13 +10,11 @@
 namespace simdphys::core {
 
 // A body as the solver moves it within a step (src/reference/rigid/bodies-inl.hpp's SolverBodyT):
-// velocities, the motion since the step's start, the inverse mass and the world inverse inertia
-// (symmetric: xx, xy, xz, yy, yz, zz). 24 floats, so a body is a third of a 64-byte line pair.
+// velocities and the motion since the step's start (the masses are in the contact rows). 16
+// floats: a 64-byte line.
 struct SolverBody {
   float v[3], w[3], dp[3], dq[4];  // dq: x, y, z, w
-  float invMass;
-  float invInertia[6];
-  float pad[2];
+  float pad[3];
 };
 
 // The contacts, a lane each. Fields per lane, then per point k (0..3) the block at
@@ -38,7 +36,13 @@ struct ContactRows {
     biasRate,
     massScale,
     impulseScale,
-    kPoint
+    // The bodies' inverse masses and world inverse inertias (xx, xy, xz, yy, yz, zz), fixed for
+    // the step: read with the lane's other fields rather than gathered from the records.
+    invMassA,
+    inertiaA,
+    invMassB = inertiaA + 6,
+    inertiaB,
+    kPoint = inertiaB + 6
   };
   enum : std::size_t {
     rAx,

@@ -42,8 +42,10 @@ struct LaneBodies {
   V invMass;
   V inertia[6];  // xx, xy, xz, yy, yz, zz
 
-  LaneBodies(D d, const core::SolverBody* bodies, const std::uint32_t* index, bool motion)
-      : at(recordOffsets(d, index)) {
+  // The lane's body A (or B) of the rows at `lane`; its motion (dp, dq) read only if `motion`.
+  LaneBodies(D d, const core::SolverBody* bodies, const core::ContactRows& rows, std::size_t lane,
+             bool isB, bool motion)
+      : at(recordOffsets(d, (isB ? rows.b : rows.a) + lane)) {
     const float* base = reinterpret_cast<const float*>(bodies);
     const auto field = [&](std::size_t offset) { return gatherField(d, base + offset, at); };
     for (int k = 0; k < 3; ++k) {
@@ -53,9 +55,10 @@ struct LaneBodies {
     }
     for (int k = 0; k < 4; ++k)
       dq[k] = motion ? field(offsetof(core::SolverBody, dq) / 4 + std::size_t(k)) : Zero(d);
-    invMass = field(offsetof(core::SolverBody, invMass) / 4);
-    for (int k = 0; k < 6; ++k)
-      inertia[k] = field(offsetof(core::SolverBody, invInertia) / 4 + std::size_t(k));
+    using R = core::ContactRows;
+    invMass = Load(d, rows.f[isB ? R::invMassB : R::invMassA] + lane);
+    for (std::size_t k = 0; k < 6; ++k)
+      inertia[k] = Load(d, rows.f[(isB ? R::inertiaB : R::inertiaA) + k] + lane);
   }
   void store(D d, core::SolverBody* bodies) const {
     float* base = reinterpret_cast<float*>(bodies);
@@ -116,7 +119,7 @@ void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
   using V = LaneOf<D>;
   using R = core::ContactRows;
   forEachVector(d, rows, [&](std::size_t lane) {
-    LaneBodies<D> a(d, bodies, rows.a + lane, false), b(d, bodies, rows.b + lane, false);
+    LaneBodies<D> a(d, bodies, rows, lane, false, false), b(d, bodies, rows, lane, true, false);
     const Vec3L<V> n = load3(d, rows.f, R::nx, lane), t1 = load3(d, rows.f, R::t1x, lane),
                    t2 = load3(d, rows.f, R::t2x, lane);
     for (std::size_t k = 0; k < 4; ++k) {
@@ -142,7 +145,7 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
           minPush = Set(d, -pass.maxPush), baumgarte = Set(d, pass.baumgarte * pass.invH),
           slop = Set(d, pass.slop);
   forEachVector(d, rows, [&](std::size_t lane) {
-    LaneBodies<D> a(d, bodies, rows.a + lane, true), b(d, bodies, rows.b + lane, true);
+    LaneBodies<D> a(d, bodies, rows, lane, false, true), b(d, bodies, rows, lane, true, true);
     const Vec3L<V> n = load3(d, rows.f, R::nx, lane);
     V biasRate = zero, massScale = one, impulseScale = zero;
     if (pass.bias == core::ContactPass::kSoft) {
@@ -218,7 +221,7 @@ void restitutionT(D d, const core::ContactRows& rows, core::SolverBody* bodies, 
   forEachVector(d, rows, [&](std::size_t lane) {
     const V e = Load(d, rows.f[R::restitution] + lane);
     if (AllTrue(d, Eq(e, zero))) return;
-    LaneBodies<D> a(d, bodies, rows.a + lane, false), b(d, bodies, rows.b + lane, false);
+    LaneBodies<D> a(d, bodies, rows, lane, false, false), b(d, bodies, rows, lane, true, false);
     const Vec3L<V> n = load3(d, rows.f, R::nx, lane);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;

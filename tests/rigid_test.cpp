@@ -5,10 +5,8 @@
 // input. The manifolds are rigid_manifold_test, the kernels and W5 on every path
 // rigid_kernel_test.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <cmath>
-#include <cstring>
 #include <numbers>
 #include <vector>
 
@@ -255,33 +253,6 @@ TEST(Rigid, BoxDroppedOnItsCornerComesToRestOnAFace) {
   EXPECT_NEAR(world.bodies().position(h).y(), 0.5f, 0.005f);
   const Mat3f R = world.bodies().orientation(h).toRotationMatrix();
   EXPECT_GT(R.row(1).cwiseAbs().maxCoeff(), std::cos(0.5f * std::numbers::pi_v<float> / 180));
-}
-
-// The state after W5's first second at B = 6, at 1 and 2 OpenMP threads: the bits of every
-// position, orientation and velocity agree. The step has no parallel part at this size (the
-// broadphase sweeps in parallel from 20,000 boxes), so this guards against a thread-dependent
-// piece being added; the parallel stages will need a world large enough to split.
-TEST(Rigid, SameStateAtOneAndTwoThreads) {
-  const auto bits = [](int threads) {
-    const int was = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    World world(WorldSettings{kDt, 1, threads});
-    world.obstacles().add(workloads::kPyramidGround);
-    for (const Vec3f& p : workloads::pyramidCenters(6)) {
-      BodyDef d;
-      d.position = p;
-      world.bodies().add(d);
-    }
-    run(world, 60);
-    omp_set_num_threads(was);
-    std::vector<float> out;
-    for (std::size_t f = 0; f < fields::Body::kCount; ++f)
-      for (const float x : world.bodies().stream(f)) out.push_back(x);
-    return out;
-  };
-  const std::vector<float> one = bits(1), two = bits(2);
-  ASSERT_EQ(one.size(), two.size());
-  EXPECT_EQ(0, std::memcmp(one.data(), two.data(), one.size() * sizeof(float)));
 }
 
 // A small fast sphere never passes through a thin box: speculative contacts reach as far as a

@@ -1,6 +1,8 @@
 // KernelPasses (src/rigid/contact_rows.hpp).
 #include "src/rigid/contact_rows.hpp"
 
+#include <tuple>
+
 #include "simd/kernels.hpp"
 
 namespace simdphys::detail {
@@ -9,7 +11,8 @@ using R = core::ContactRows;
 
 void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contacts,
                            const std::vector<std::uint32_t>& colourBegin,
-                           const SolveParams<float>& p) {
+                           const SolveParams<float>& p,
+                           const std::vector<SolverBodyT<float>>& bodies) {
   // Batches: each overflow contact alone (they may share bodies), then each colour.
   batchBegin_.assign(1, 0);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
@@ -45,6 +48,14 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
     const Softness<float>& soft = c.isStatic ? p.staticSoft : p.soft;
     at(R::biasRate, lane) = soft.biasRate, at(R::massScale, lane) = soft.massScale;
     at(R::impulseScale, lane) = soft.impulseScale;
+    for (const auto& [body, mass, inertia] :
+         {std::tuple(c.a, R::invMassA, R::inertiaA), std::tuple(c.b, R::invMassB, R::inertiaB)}) {
+      const SolverBodyT<float>& sb = bodies[body];
+      const Mat3f& I = sb.invInertia;
+      at(mass, lane) = sb.invMass;
+      const float upper[6] = {I(0, 0), I(0, 1), I(0, 2), I(1, 1), I(1, 2), I(2, 2)};
+      for (std::size_t k = 0; k < 6; ++k) at(inertia + k, lane) = upper[k];
+    }
     for (int j = 0; j < c.count; ++j) {
       const ContactPointConstraintT<float>& q = c.points[std::size_t(j)];
       const std::size_t o = R::kPoint + std::size_t(j) * R::kPointFields;
@@ -81,10 +92,6 @@ void KernelPasses::toRecords(const std::vector<SolverBodyT<float>>& bodies) {
     core::SolverBody& r = records_[i];
     for (int k = 0; k < 3; ++k) r.v[k] = b.v[k], r.w[k] = b.w[k], r.dp[k] = b.dp[k];
     r.dq[0] = b.dq.x(), r.dq[1] = b.dq.y(), r.dq[2] = b.dq.z(), r.dq[3] = b.dq.w();
-    r.invMass = b.invMass;
-    const Mat3f& I = b.invInertia;
-    r.invInertia[0] = I(0, 0), r.invInertia[1] = I(0, 1), r.invInertia[2] = I(0, 2);
-    r.invInertia[3] = I(1, 1), r.invInertia[4] = I(1, 2), r.invInertia[5] = I(2, 2);
   }
 }
 

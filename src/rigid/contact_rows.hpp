@@ -19,7 +19,8 @@ class KernelPasses {
   void reset(bool plainLoops, std::uint32_t dummy) { plainLoops_ = plainLoops, dummy_ = dummy; }
 
   void prepare(const std::vector<ContactConstraintT<float>>& contacts,
-               const std::vector<std::uint32_t>& colourBegin, const SolveParams<float>& p);
+               const std::vector<std::uint32_t>& colourBegin, const SolveParams<float>& p,
+               const std::vector<SolverBodyT<float>>& bodies);
   void warmStart(std::vector<ContactConstraintT<float>>&, std::vector<SolverBodyT<float>>& b);
   void solve(std::vector<ContactConstraintT<float>>&, std::vector<SolverBodyT<float>>& b,
              const SolveParams<float>& p, bool useBias, bool reverse);

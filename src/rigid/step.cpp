@@ -72,7 +72,7 @@ detail::KernelPasses& kernelPasses(std::size_t bodies) {
 }
 }  // namespace
 
-void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
+void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt, int threads,
                      const std::string& where) {
   using namespace detail;
   std::vector<BodyT<float>> state = Internals::load<float>(bodies);
@@ -81,9 +81,10 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
   // The contact passes on the active path: the reference on Eigen, or the kernels over rows
   // (or their plain loops), the rest of the step shared.
   const RigidStepStats stats =
-      referencePathActive() ? stepState(state, slots, cache, obstacles, bodies.settings(), dt)
-                            : stepState(state, slots, cache, obstacles, bodies.settings(), dt,
-                                        kernelPasses(state.size()));
+      referencePathActive()
+          ? stepState(state, slots, cache, obstacles, bodies.settings(), dt, threads)
+          : stepState(state, slots, cache, obstacles, bodies.settings(), dt, threads,
+                      kernelPasses(state.size()));
   // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
   for (std::size_t i = 0; i < state.size(); ++i) {
     const std::string body = where + ": body " + std::to_string(i);
@@ -101,9 +102,9 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
   bodies.passSeconds_ = stats.passSeconds;
 }
 
-void detail::stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt,
+void detail::stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt, int threads,
                         const std::string& where) {
-  Internals::step(bodies, obstacles, dt, where);
+  Internals::step(bodies, obstacles, dt, threads, where);
 }
 
 }  // namespace simdphys

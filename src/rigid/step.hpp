@@ -17,15 +17,16 @@ struct RigidBodies::Internals {
   template <class T>
   static void store(RigidBodies& bodies, const std::vector<detail::BodyT<T>>& state);
   static std::vector<std::uint32_t> slots(const RigidBodies& bodies);
-  static void step(RigidBodies& bodies, const Obstacles& obstacles, float dt,
+  static void step(RigidBodies& bodies, const Obstacles& obstacles, float dt, int threads,
                    const std::string& where);
 };
 
 namespace detail {
 
-// One step of dt. Throws Error naming `where` and the body, with nothing moved, if a body would
-// leave the supported range or its state stop being finite.
-void stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt,
+// One step of dt on `threads` threads (0: OpenMP's default; the result does not depend on it).
+// Throws Error naming `where` and the body, with nothing moved, if a body would leave the
+// supported range or its state stop being finite.
+void stepBodies(RigidBodies& bodies, const Obstacles& obstacles, float dt, int threads,
                 const std::string& where);
 
 }  // namespace detail

@@ -107,7 +107,7 @@ void World::step() {
   if (bodies_.size() != 0) {
     const auto bodiesStart = Clock::now();
     for (int sub = 0; sub < settings_.substeps; ++sub) {
-      detail::stepBodies(bodies_, obstacles_, dt, "World::step");
+      detail::stepBodies(bodies_, obstacles_, dt, settings_.threads, "World::step");
       profile_.bodies.elements += bodies_.size();
     }
     profile_.bodies.seconds = std::chrono::duration<double>(Clock::now() - bodiesStart).count();

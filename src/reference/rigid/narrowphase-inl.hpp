@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <variant>
 #include <vector>
+
+#include <omp.h>
 
 #include "simdphys/broadphase.hpp"
 #include "simdphys/obstacles.hpp"
@@ -163,15 +166,12 @@ inline constexpr int kColours = 24;
 template <class T>
 std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& contacts,
                                           const std::vector<BodyT<T>>& bodies) {
-  const std::size_t n = bodies.size(), words = (n + 63) / 64;
-  std::vector<std::uint64_t> used(std::size_t(kColours) * words, 0);
+  static_assert(kColours <= 32);
+  const std::size_t n = bodies.size();
+  // Each moving body's colours taken, a bit each; obstacles and kinematic bodies take none.
+  std::vector<std::uint32_t> used(n, 0);
   const auto moving = [&](std::uint32_t b) { return b < n && bodies[b].invMass > 0; };
-  const auto isUsed = [&](int c, std::uint32_t b) {
-    return moving(b) && (used[std::size_t(c) * words + b / 64] >> (b % 64) & 1) != 0;
-  };
-  const auto take = [&](int c, std::uint32_t b) {
-    if (moving(b)) used[std::size_t(c) * words + b / 64] |= std::uint64_t(1) << (b % 64);
-  };
+  const auto usedBy = [&](std::uint32_t b) { return moving(b) ? used[b] : 0u; };
   // Colours for the two kinds, the one-body contacts after the last colour the others take.
   std::vector<int> colour(contacts.size(), -1);
   int twoBodyColours = 0;
@@ -179,12 +179,16 @@ std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& co
     for (std::size_t i = 0; i < contacts.size(); ++i) {
       const ContactConstraintT<T>& c = contacts[i];
       if ((moving(c.a) && moving(c.b)) != (pass == 0)) continue;
-      for (int k = pass == 0 ? 0 : std::min(twoBodyColours, kColours - 1); k < kColours; ++k)
-        if (!isUsed(k, c.a) && !isUsed(k, c.b)) {
-          take(k, c.a), take(k, c.b), colour[i] = k;
-          if (pass == 0) twoBodyColours = std::max(twoBodyColours, k + 1);
-          break;
-        }
+      const int first = pass == 0 ? 0 : std::min(twoBodyColours, kColours - 1);
+      // The free colours from `first` on; the lowest of them, if any.
+      const std::uint32_t free =
+          ~(usedBy(c.a) | usedBy(c.b)) & (~0u << first) & ((std::uint64_t(1) << kColours) - 1);
+      if (free == 0) continue;
+      const int k = std::countr_zero(free);
+      if (moving(c.a)) used[c.a] |= 1u << k;
+      if (moving(c.b)) used[c.b] |= 1u << k;
+      colour[i] = k;
+      if (pass == 0) twoBodyColours = std::max(twoBodyColours, k + 1);
     }
   // Stable by colour, the overflow (-1) first.
   std::vector<std::uint32_t> begin(kColours + 2, 0);
@@ -201,14 +205,18 @@ std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& co
   return begin;
 }
 
+// Below this many body pairs the manifolds are found on one thread: starting threads costs more.
+inline constexpr std::size_t kParallelPairs = 256;
+
 // The step's contacts, body pairs first (in the order of their keys) and obstacle contacts
 // after (colourContacts then orders them for the solver). `slots`: each
 // body's handle slot. maxSeparation of a pair: the speculative distance plus the distance the
-// two may close within dt.
+// two may close within dt. The pairs' manifolds are found on `threads` threads (0: OpenMP's
+// default), each into the pair's own slot, then taken in key order: the same at any count.
 template <class T>
 void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vector<BodyT<T>>& bodies,
                   std::span<const std::uint32_t> slots, const Obstacles& obstacles,
-                  const RigidSettings& s, T dt, T& deepest) {
+                  const RigidSettings& s, T dt, int threads, T& deepest) {
   const auto n = std::uint32_t(bodies.size());
   const std::uint32_t dummy = n;
   BoxStream bounds;
@@ -246,11 +254,23 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
     for (int i = 0; i < m.count; ++i)
       deepest = std::max(deepest, -m.points[std::size_t(i)].separation);
   };
-  for (const auto& [key, p] : keyed) {
+  // A thread's buffer, reused from step to step; named here, outside the parallel loop, where
+  // the name is the calling thread's.
+  static thread_local std::vector<ManifoldT<T>> found;
+  std::vector<ManifoldT<T>>& manifolds = found;
+  manifolds.resize(keyed.size());
+  const int t = keyed.size() < kParallelPairs ? 1 : threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(static) num_threads(t)
+  for (std::size_t i = 0; i < keyed.size(); ++i) {
+    const Pair p = keyed[i].second;
+    manifolds[i] =
+        collideBody(bodies[p.a], bodies[p.b], T(s.speculativeDistance) + travel[p.a] + travel[p.b]);
+  }
+  for (std::size_t i = 0; i < keyed.size(); ++i) {
+    const auto& [key, p] = keyed[i];
     const BodyT<T>&a = bodies[p.a], &b = bodies[p.b];
-    const ManifoldT<T> m = collideBody(a, b, T(s.speculativeDistance) + travel[p.a] + travel[p.b]);
-    record(m);
-    addConstraint(contacts, m, p.a, p.b, a.x, b.x, std::sqrt(a.friction * b.friction),
+    record(manifolds[i]);
+    addConstraint(contacts, manifolds[i], p.a, p.b, a.x, b.x, std::sqrt(a.friction * b.friction),
                   std::max(a.restitution, b.restitution), false, key);
   }
   const std::span<const ObstacleShape> shapes = obstacles.shapes();

@@ -22,10 +22,25 @@ struct RigidStepStats {
 template <class T>
 void warmStartFrom(const std::vector<CachedManifoldT<T>>& cache,
                    std::vector<ContactConstraintT<T>>& contacts) {
+  // The contacts come mostly in key order (findContacts'): each search starts from the last
+  // match and gallops forward, so a step's lookups cost about one pass over the cache.
+  const auto before = [](const CachedManifoldT<T>& m,
+                         const std::pair<std::uint64_t, std::uint32_t>& k) {
+    return std::pair(m.key, m.sub) < k;
+  };
+  auto from = cache.begin();
   for (ContactConstraintT<T>& c : contacts) {
-    const auto it = std::lower_bound(
-        cache.begin(), cache.end(), std::pair(c.key, c.sub),
-        [](const CachedManifoldT<T>& m, const auto& k) { return std::pair(m.key, m.sub) < k; });
+    const std::pair key(c.key, c.sub);
+    if (from != cache.begin() && !before(*(from - 1), key)) from = cache.begin();
+    std::size_t step = 1;
+    auto to = from;
+    while (to != cache.end() && before(*to, key)) {
+      from = to + 1;
+      to = std::size_t(cache.end() - from) > step ? from + std::ptrdiff_t(step) : cache.end();
+      step *= 2;
+    }
+    const auto it = std::lower_bound(from, to, key, before);
+    from = it;
     if (it == cache.end() || it->key != c.key || it->sub != c.sub) continue;
     for (int i = 0; i < c.count; ++i)
       for (int j = 0; j < it->count; ++j)
@@ -170,7 +185,7 @@ void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> s
 template <class T>
 struct ReferencePasses {
   void prepare(const std::vector<ContactConstraintT<T>>&, const std::vector<std::uint32_t>&,
-               const SolveParams<T>&) {}
+               const SolveParams<T>&, const std::vector<SolverBodyT<T>>&) {}
   void warmStart(std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b) {
     detail::warmStart(c, b);
   }
@@ -188,12 +203,14 @@ struct ReferencePasses {
 template <class T, class Passes = ReferencePasses<T>>
 RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> slots,
                          std::vector<CachedManifoldT<T>>& cache, const Obstacles& obstacles,
-                         const RigidSettings& s, T dt, Passes&& passes = Passes()) {
+                         const RigidSettings& s, T dt, int threads = 1,
+                         Passes&& passes = Passes()) {
   RigidStepStats stats;
   T deepest = 0;
   // A thread's buffer, reused from step to step (rewritten whole: no state carries over).
   static thread_local std::vector<ContactConstraintT<T>> contacts;
-  findContacts(contacts, bodies, slots, obstacles, s, dt, deepest);
+  findContacts(contacts, bodies, slots, obstacles, s, dt, threads, deepest);
+  if (s.warmStarting) warmStartFrom(cache, contacts);  // in findContacts' order: near key order
   const std::vector<std::uint32_t> colourBegin = colourContacts(contacts, bodies);
   stats.overflow = colourBegin[1];
   for (std::size_t k = 1; k + 1 < colourBegin.size(); ++k)
@@ -201,7 +218,6 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   stats.deepest = double(deepest);
   stats.manifolds = contacts.size();
   for (const auto& c : contacts) stats.points += std::size_t(c.count);
-  if (s.warmStarting) warmStartFrom(cache, contacts);
 
   const std::size_t n = bodies.size();
   std::vector<SolverBodyT<T>> solver(n + 1);  // the last: the static dummy of obstacle contacts
@@ -218,7 +234,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   const T hertz = std::min(T(s.contactHertz), T(0.25) / h);
   p.soft = Softness<T>(hertz, T(s.contactDampingRatio), h);
   p.staticSoft = Softness<T>(2 * hertz, T(s.contactDampingRatio), h);
-  passes.prepare(contacts, colourBegin, p);
+  passes.prepare(contacts, colourBegin, p, solver);
   using Clock = std::chrono::steady_clock;
   const auto timed = [&](auto&& pass) {
     const auto start = Clock::now();
