@@ -153,6 +153,30 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
       massScale = Load(d, rows.f[R::massScale] + lane);
       impulseScale = Load(d, rows.f[R::impulseScale] + lane);
     }
+    const Vec3L<V> t[2] = {load3(d, rows.f, R::t1x, lane), load3(d, rows.f, R::t2x, lane)};
+    const V friction = Load(d, rows.f[R::friction] + lane);
+    for (std::size_t j = 0; j < 4; ++j) {
+      const std::size_t k = pass.reverse ? 3 - j : j;
+      const std::size_t p = R::kPoint + k * R::kPointFields;
+      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
+                     rB = load3(d, rows.f, p + R::rBx, lane);
+      // The reference's cone clamp (solver-inl.hpp), in the same order of operations.
+      const V limit = friction * Load(d, rows.f[p + R::normalImpulse] + lane);
+      V old[2], total[2];
+      for (std::size_t i = 0; i < 2; ++i) {
+        const V vt = relativeAlong(a, b, rA, rB, t[i]);
+        old[i] = Load(d, rows.f[p + R::tangent1 + i] + lane);
+        total[i] = old[i] - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt;
+      }
+      const V squared = total[0] * total[0] + total[1] * total[1];
+      const auto over = Gt(squared, limit * limit);  // then squared > 0
+      const V scale = limit / Sqrt(IfThenElse(over, squared, Set(d, 1.0f)));
+      for (std::size_t i = 0; i < 2; ++i) {
+        total[i] = IfThenElse(over, total[i] * scale, total[i]);
+        Store(total[i], d, rows.f[p + R::tangent1 + i] + lane);
+      }
+      applyImpulse(a, b, rA, rB, t[0] * (total[0] - old[0]) + t[1] * (total[1] - old[1]));
+    }
     for (std::size_t j = 0; j < 4; ++j) {
       const std::size_t k = pass.reverse ? 3 - j : j;
       const std::size_t p = R::kPoint + k * R::kPointFields;
@@ -183,30 +207,6 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
       Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d,
             relative);
       applyImpulse(a, b, rA, rB, n * impulse);
-    }
-    const Vec3L<V> t[2] = {load3(d, rows.f, R::t1x, lane), load3(d, rows.f, R::t2x, lane)};
-    const V friction = Load(d, rows.f[R::friction] + lane);
-    for (std::size_t j = 0; j < 4; ++j) {
-      const std::size_t k = pass.reverse ? 3 - j : j;
-      const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
-                     rB = load3(d, rows.f, p + R::rBx, lane);
-      // The reference's cone clamp (solver-inl.hpp), in the same order of operations.
-      const V limit = friction * Load(d, rows.f[p + R::normalImpulse] + lane);
-      V old[2], total[2];
-      for (std::size_t i = 0; i < 2; ++i) {
-        const V vt = relativeAlong(a, b, rA, rB, t[i]);
-        old[i] = Load(d, rows.f[p + R::tangent1 + i] + lane);
-        total[i] = old[i] - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt;
-      }
-      const V squared = total[0] * total[0] + total[1] * total[1];
-      const auto over = Gt(squared, limit * limit);  // then squared > 0
-      const V scale = limit / Sqrt(IfThenElse(over, squared, Set(d, 1.0f)));
-      for (std::size_t i = 0; i < 2; ++i) {
-        total[i] = IfThenElse(over, total[i] * scale, total[i]);
-        Store(total[i], d, rows.f[p + R::tangent1 + i] + lane);
-      }
-      applyImpulse(a, b, rA, rB, t[0] * (total[0] - old[0]) + t[1] * (total[1] - old[1]));
     }
     a.store(d, bodies);
     b.store(d, bodies);
