@@ -41,24 +41,41 @@ ManifoldT<T> collide(const ObbT<T>& a, const ObbT<T>& b, T maxSeparation) {
   const Vec3<T> d = b.center - a.center;
   const T size = std::min(a.halfExtents.maxCoeff(), b.halfExtents.maxCoeff());
 
-  // The separating axis test: the best axis of each kind (A's faces, B's faces, edge pairs).
+  // The separating axis test: the best axis of each kind (A's faces, B's faces, edge pairs), in
+  // A's frame (Gottschalk's OBBTree test, Ericson 4.4.1): R holds B's axes, t B's centre, so each
+  // axis's separation is a few products of their entries rather than projections of both boxes.
+  // R's rows and columns are orthonormal to the boxes' validation (64 eps), which the edge
+  // axes' closed forms rely on.
   struct Axis {
     T separation = -std::numeric_limits<T>::infinity();
     Vec3<T> l = Vec3<T>::UnitX();
     int i = 0, j = 0;  // the axes of A and of B it comes from
   };
   std::array<Axis, 3> best;
-  const auto consider = [&](int kind, const Vec3<T>& l, int i, int j) {
-    const T s = std::abs(l.dot(d)) - projectedRadius(a, l) - projectedRadius(b, l);
-    if (s > best[std::size_t(kind)].separation) best[std::size_t(kind)] = {s, l, i, j};
+  const auto consider = [&](int kind, T s, int i, int j) {
+    if (s > best[std::size_t(kind)].separation) best[std::size_t(kind)] = {s, {}, i, j};
   };
-  for (int i = 0; i < 3; ++i) consider(0, a.axes.col(i), i, 0), consider(1, b.axes.col(i), 0, i);
+  const Mat3<T> R = a.axes.transpose() * b.axes, absR = R.cwiseAbs();
+  const Vec3<T> t = a.axes.transpose() * d;
+  const Vec3<T>&ha = a.halfExtents, &hb = b.halfExtents;
+  for (int i = 0; i < 3; ++i) consider(0, std::abs(t[i]) - ha[i] - absR.row(i).dot(hb), i, 0);
+  for (int j = 0; j < 3; ++j)
+    consider(1, std::abs(t.dot(R.col(j))) - absR.col(j).dot(ha) - hb[j], 0, j);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
-      const Vec3<T> c = a.axes.col(i).cross(b.axes.col(j));
-      const T sine = c.norm();
-      if (sine > parallelSine<T>()) consider(2, c / sine, i, j);
+      // The axis A_i x B_j is (0, -R(i2, j), R(i1, j)) in A's frame, up to the order of its
+      // entries; its length is the sine of the edges' angle.
+      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      const T sine = std::sqrt(R(i1, j) * R(i1, j) + R(i2, j) * R(i2, j));
+      if (!(sine > parallelSine<T>())) continue;
+      const T ra = ha[i1] * absR(i2, j) + ha[i2] * absR(i1, j);
+      const T rb = hb[j1] * absR(i, j2) + hb[j2] * absR(i, j1);
+      consider(2, (std::abs(t[i2] * R(i1, j) - t[i1] * R(i2, j)) - ra - rb) / sine, i, j);
     }
+  best[0].l = a.axes.col(best[0].i);
+  best[1].l = b.axes.col(best[1].j);
+  if (best[2].separation > -std::numeric_limits<T>::infinity())  // some edge pair not parallel
+    best[2].l = a.axes.col(best[2].i).cross(b.axes.col(best[2].j)).normalized();
   if (std::max({best[0].separation, best[1].separation, best[2].separation}) > maxSeparation)
     return {};
   const auto clearlyAbove = [&](const Axis& x, const Axis& than) {

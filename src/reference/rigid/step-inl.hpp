@@ -56,9 +56,23 @@ void warmStartFrom(const std::vector<CachedManifoldT<T>>& cache,
 template <class T>
 void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
                   std::vector<CachedManifoldT<T>>& cache) {
-  cache.clear();
-  for (const ContactConstraintT<T>& c : contacts) {
-    CachedManifoldT<T> m{c.key, c.sub, c.count, {}, {}};
+  // The keys sorted with each contact's index, then the entries written in that order: sorting
+  // 16-byte keys rather than the 80-byte entries.
+  struct Keyed {
+    std::uint64_t key;
+    std::uint32_t sub, index;
+  };
+  std::vector<Keyed> order(contacts.size());
+  for (std::uint32_t k = 0; k < contacts.size(); ++k)
+    order[k] = {contacts[k].key, contacts[k].sub, k};
+  std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
+    return std::pair(l.key, l.sub) < std::pair(r.key, r.sub);
+  });
+  cache.resize(contacts.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const ContactConstraintT<T>& c = contacts[order[k].index];
+    CachedManifoldT<T>& m = cache[k];
+    m = {c.key, c.sub, c.count, {}, {}};
     for (int i = 0; i < c.count; ++i) {
       const ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
       m.id[i] = p.id;
@@ -66,11 +80,7 @@ void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
       m.impulse[i][1] = p.tangentImpulse[0];
       m.impulse[i][2] = p.tangentImpulse[1];
     }
-    cache.push_back(m);
   }
-  std::sort(cache.begin(), cache.end(), [](const auto& l, const auto& r) {
-    return std::pair(l.key, l.sub) < std::pair(r.key, r.sub);
-  });
 }
 
 // Gravity, forces and damping.
