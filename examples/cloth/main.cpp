@@ -22,10 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "../picture.hpp"
 #include "cloth.hpp"
-
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image_write.h>
 
 namespace {
 
@@ -64,8 +62,6 @@ Vec3f shade(const ModelHit& hit, const Vec3f& direction, std::uint32_t n) {
   return (0.85f * base + 0.15f * tint) * (0.1f + 0.3f * skyLight + 0.6f * eyeLight);
 }
 
-std::uint8_t toByte(float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); }
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,29 +99,16 @@ int main(int argc, char** argv) {
     const Camera camera = Camera::perspective({1.0f, 0.0f, -8.5f}, {0, 0.6f, -0.2f}, Vec3f::UnitY(),
                                               std::numbers::pi_v<float> * 5 / 18, float(width),
                                               float(height), 0.1f, 100);
-    const RayStream rays = camera.primaryRays();
-    std::vector<ModelHit> hits(rays.size());
-    scene.raycast(rays, hits);
-
     // The sun, above and behind the eye, casts the cloth's shadow on the floor.
     const Vec3f sun = Vec3f(-0.3f, 0.75f, -0.6f).normalized();
-    std::vector<std::uint8_t> image(rays.size() * 3);
-    for (std::size_t p = 0; p < hits.size(); ++p) {
-      const ModelHit& hit = hits[p];
-      // Sky: lighter towards the horizon.
-      Vec3f colour = Vec3f(0.75f, 0.82f, 0.92f) -
-                     0.3f * std::abs(rays[p].direction.y()) * Vec3f(0.4f, 0.3f, 0.1f);
-      if (hit.hit()) {
-        colour = shade(hit, rays[p].direction, std::uint32_t(n));
-        if (hit.model == 2 && scene.raycast({hit.point + 1e-3f * hit.normal, sun}).hit())
-          colour *= 0.6f;
-      }
-      for (int c = 0; c < 3; ++c) image[3 * p + c] = toByte(colour[c]);
-    }
-    if (!stbi_write_png(out.c_str(), width, height, 3, image.data(), width * 3)) {
-      std::fprintf(stderr, "error: cannot write %s\n", out.c_str());
-      return 1;
-    }
+    const bool written =
+        picture::write(out, scene, camera, width, height, [&](const ModelHit& hit, const Ray& ray) {
+          Vec3f colour = shade(hit, ray.direction, std::uint32_t(n));
+          if (hit.model == 2 && scene.raycast({hit.point + 1e-3f * hit.normal, sun}).hit())
+            colour *= 0.6f;
+          return colour;
+        });
+    if (!written) return 1;
     std::printf(
         "cloth picture: W3 n = %zu, %d frames at %.2f ms a frame (path %s), mean structural "
         "stretch %.3f%%; wrote %dx%d %s\n",

@@ -20,18 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "../picture.hpp"
 #include "pyramid.hpp"
 
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image_write.h>
-
-namespace {
-
 using namespace simdphys;
-
-std::uint8_t toByte(float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); }
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "pyramid_final.png";
@@ -76,48 +68,34 @@ int main(int argc, char** argv) {
 
     // From a corner, a little above the apex's height: three faces of the pyramid's steps.
     const float b = float(base);
-    const Camera camera = Camera::perspective(
-        {1.25f * b, 0.85f * b, 1.6f * b}, {0, 0.32f * b, 0}, Vec3f::UnitY(),
-        std::numbers::pi_v<float> * 2 / 9, float(width), float(height), 0.1f, 10 * b);
-    const RayStream rays = camera.primaryRays();
-    std::vector<ModelHit> hits(rays.size());
-    scene.raycast(rays, hits);
-
+    const Camera camera = Camera::perspective({1.25f * b, 0.85f * b, 1.6f * b}, {0, 0.32f * b, 0},
+                                              Vec3f::UnitY(), std::numbers::pi_v<float> * 2 / 9,
+                                              float(width), float(height), 0.1f, 10 * b);
     const Vec3f sun = Vec3f(-0.45f, 0.8f, 0.35f).normalized();
     const double scale = m.maxDisplacement > 0 ? m.maxDisplacement : 1;
-    std::vector<std::uint8_t> image(rays.size() * 3);
-    for (std::size_t p = 0; p < hits.size(); ++p) {
-      const ModelHit& hit = hits[p];
-      Vec3f colour = Vec3f(0.75f, 0.82f, 0.92f) -
-                     0.3f * std::abs(rays[p].direction.y()) * Vec3f(0.4f, 0.3f, 0.1f);
-      if (hit.hit()) {
-        Vec3f albedo(0.55f, 0.6f, 0.55f);  // the ground
-        if (hit.model < boxes.size()) {
-          const float moved = float((end[hit.model] - start[hit.model]).norm() / scale);
-          albedo = Vec3f(0.95f, 0.93f, 0.88f) * (1 - moved) + Vec3f(0.85f, 0.2f, 0.15f) * moved;
-          // Darker within 2 cm of an edge (two coordinates at the surface): the boxes' outlines.
-          const Obb& box = shapes[hit.model];
-          const Vec3f local = box.axes.transpose() * (hit.point - box.center);
-          const Vec3f fromSurface = (box.halfExtents - local.cwiseAbs()).cwiseAbs();
-          if ((fromSurface.array() < 0.02f).count() >= 2) albedo *= 0.6f;
-        }
-        const bool lit = !scene.raycast({hit.point + 1e-3f * hit.normal, sun}).hit();
-        const float sunLight = lit ? std::max(0.0f, hit.normal.dot(sun)) : 0.0f;
-        const float skyLight = 0.5f + 0.5f * hit.normal.y();
-        colour = albedo * (0.15f + 0.25f * skyLight + 0.6f * sunLight);
-      }
-      for (int c = 0; c < 3; ++c) image[3 * p + c] = toByte(colour[c]);
-    }
-    if (!stbi_write_png(out.c_str(), width, height, 3, image.data(), width * 3)) {
-      std::fprintf(stderr, "error: cannot write %s\n", out.c_str());
-      return 1;
-    }
+    const bool written =
+        picture::write(out, scene, camera, width, height, [&](const ModelHit& hit, const Ray&) {
+          Vec3f albedo(0.55f, 0.6f, 0.55f);  // the ground
+          if (hit.model < boxes.size()) {
+            const float moved = float((end[hit.model] - start[hit.model]).norm() / scale);
+            albedo = Vec3f(0.95f, 0.93f, 0.88f) * (1 - moved) + Vec3f(0.85f, 0.2f, 0.15f) * moved;
+            // Darker within 2 cm of an edge (two coordinates at the surface): the boxes' outlines.
+            const Obb& box = shapes[hit.model];
+            const Vec3f local = box.axes.transpose() * (hit.point - box.center);
+            const Vec3f fromSurface = (box.halfExtents - local.cwiseAbs()).cwiseAbs();
+            if ((fromSurface.array() < 0.02f).count() >= 2) albedo *= 0.6f;
+          }
+          const bool lit = !scene.raycast({hit.point + 1e-3f * hit.normal, sun}).hit();
+          const float sunLight = lit ? std::max(0.0f, hit.normal.dot(sun)) : 0.0f;
+          const float skyLight = 0.5f + 0.5f * hit.normal.y();
+          return Vec3f(albedo * (0.15f + 0.25f * skyLight + 0.6f * sunLight));
+        });
+    if (!written) return 1;
     std::printf(
         "pyramid picture: W5 B = %d (%zu boxes), %d frames at %.2f ms a frame (path %s), largest "
         "displacement %.4f m, deepest penetration %.4f m, %s; wrote %dx%d %s\n",
         base, boxes.size(), workloads::kPyramidFrames, msPerFrame, activePath().c_str(),
-        m.maxDisplacement, deepest, m.standing ? "standing" : "fallen", width, height,
-        out.c_str());
+        m.maxDisplacement, deepest, m.standing ? "standing" : "fallen", width, height, out.c_str());
   } catch (const Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -30,6 +30,29 @@ T projectedRadius(const ObbT<T>& box, const Vec3<T>& l) {
   return (box.axes.transpose() * l).cwiseAbs().dot(box.halfExtents);
 }
 
+// The face of `box` (centred at `centre`) whose outward normal is most along `dir`, as a clip
+// polygon of its four corners (corner c lies between the edges c - 1 and c); `face` receives its
+// index, 2 k for the face along +axis k and 2 k + 1 for -axis k.
+template <class T>
+ClipPolygon<T> supportFace(const ObbT<T>& box, const Vec3<T>& centre, const Vec3<T>& dir,
+                           std::uint32_t& face) {
+  const Vec3<T> inBox = box.axes.transpose() * dir;
+  int k = 0;
+  inBox.cwiseAbs().maxCoeff(&k);
+  const bool negative = inBox[k] < 0;
+  face = std::uint32_t(2 * k + negative);
+  const Vec3<T> c =
+      centre + (negative ? -box.halfExtents[k] : box.halfExtents[k]) * box.axes.col(k);
+  const Vec3<T> u = box.halfExtents[(k + 1) % 3] * box.axes.col((k + 1) % 3);
+  const Vec3<T> v = box.halfExtents[(k + 2) % 3] * box.axes.col((k + 2) % 3);
+  ClipPolygon<T> poly;
+  poly.push({c + u + v, 3, 0});
+  poly.push({c - u + v, 0, 1});
+  poly.push({c - u - v, 1, 2});
+  poly.push({c + u - v, 2, 3});
+  return poly;
+}
+
 }  // namespace simdphys::detail
 
 namespace simdphys {
@@ -53,7 +76,8 @@ ManifoldT<T> collide(const ObbT<T>& a, const ObbT<T>& b, T maxSeparation) {
   };
   std::array<Axis, 3> best;
   const auto consider = [&](int kind, T s, int i, int j) {
-    if (s > best[std::size_t(kind)].separation) best[std::size_t(kind)] = {s, {}, i, j};
+    if (s > best[std::size_t(kind)].separation)
+      best[std::size_t(kind)] = {s, Vec3<T>::UnitX(), i, j};
   };
   const Mat3<T> R = a.axes.transpose() * b.axes, absR = R.cwiseAbs();
   const Vec3<T> t = a.axes.transpose() * d;
@@ -130,20 +154,8 @@ ManifoldT<T> collide(const ObbT<T>& a, const ObbT<T>& b, T maxSeparation) {
   const int k = refIsA ? axis.i : axis.j;
   const Vec3<T> n = refIsA ? m.normal : Vec3<T>(-m.normal);
   const std::uint32_t refFace = std::uint32_t(2 * k + (ref.axes.col(k).dot(n) < 0));
-  const Vec3<T> nInInc = inc.axes.transpose() * n;
-  int ki = 0;
-  nInInc.cwiseAbs().maxCoeff(&ki);
-  const bool negative = nInInc[ki] > 0;  // the face whose outward normal opposes n
-  const std::uint32_t incFace = std::uint32_t(2 * ki + negative);
-  const Vec3<T> faceCentre =
-      incCentre + (negative ? -inc.halfExtents[ki] : inc.halfExtents[ki]) * inc.axes.col(ki);
-  const Vec3<T> u = inc.halfExtents[(ki + 1) % 3] * inc.axes.col((ki + 1) % 3);
-  const Vec3<T> v = inc.halfExtents[(ki + 2) % 3] * inc.axes.col((ki + 2) % 3);
-  ClipPolygon<T> poly;
-  poly.push({faceCentre + u + v, 3, 0});  // corner c lies between the edges c - 1 and c
-  poly.push({faceCentre - u + v, 0, 1});
-  poly.push({faceCentre - u - v, 1, 2});
-  poly.push({faceCentre + u - v, 2, 3});
+  std::uint32_t incFace = 0;  // the incident face: its outward normal most against n
+  ClipPolygon<T> poly = supportFace(inc, incCentre, Vec3<T>(-n), incFace);
   for (std::uint32_t s = 0; s < 4; ++s) {
     const int e = (k + 1 + int(s / 2)) % 3;
     const Vec3<T> side = (s % 2 ? T(-1) : T(1)) * ref.axes.col(e);

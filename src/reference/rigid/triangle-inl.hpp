@@ -119,24 +119,13 @@ ManifoldT<T> collide(const ObbT<T>& a, const TriangleT<T>& b, T maxSeparation,
   if (kind == 0) {
     // The triangle's face is the reference: the box's face most along l (towards the triangle)
     // is clipped against the triangle's three side planes.
-    int k = 0;
-    const Vec3<T> lInBox = a.axes.transpose() * axis.l;
-    lInBox.cwiseAbs().maxCoeff(&k);
-    const bool negative = lInBox[k] < 0;
-    const Vec3<T> centre = (negative ? -a.halfExtents[k] : a.halfExtents[k]) * a.axes.col(k);
-    const Vec3<T> u = a.halfExtents[(k + 1) % 3] * a.axes.col((k + 1) % 3);
-    const Vec3<T> w = a.halfExtents[(k + 2) % 3] * a.axes.col((k + 2) % 3);
-    ClipPolygon<T> poly;
-    poly.push({centre + u + w, 3, 0});  // corner c lies between the edges c - 1 and c
-    poly.push({centre - u + w, 0, 1});
-    poly.push({centre - u - w, 1, 2});
-    poly.push({centre + u - w, 2, 3});
+    std::uint32_t incFace = 0;
+    ClipPolygon<T> poly = supportFace(a, Vec3<T>(Vec3<T>::Zero()), axis.l, incFace);
     for (std::uint32_t e = 0; e < 3; ++e) {
       const Vec3<T>& p = v[e];
       const Vec3<T> side = (v[(e + 1) % 3] - p).cross(face).normalized();  // outward
       poly = clip(poly, side, p, T(0), snap, 4 + e);
     }
-    const std::uint32_t incFace = std::uint32_t(2 * k + negative);
     for (int c = 0; c < poly.n; ++c) {
       const ClipVertex<T>& x = poly.v[std::size_t(c)];
       const T s = axis.l.dot(v[0] - x.p);  // the box's point above (-) or below the triangle
