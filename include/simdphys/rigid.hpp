@@ -1,6 +1,6 @@
 // Rigid bodies (book chapter 15 and its appendix): spheres and boxes with mass and inertia in
 // structure-of-arrays streams, stepped by a World (world.hpp) against each other and against the
-// world's static obstacles (obstacles.hpp: planes, spheres, boxes).
+// world's static obstacles (obstacles.hpp: planes, spheres, boxes, triangle meshes).
 //
 // A step of dt, as Box2D v3 and Box3D solve it (Catto, "Solver2D", 2024): contacts are found once
 // (broadphase over the bodies' bounds grown by the speculative distance, then the manifolds of
