@@ -71,7 +71,7 @@ template <class T, class Emit>
 void collideMesh(const BodyT<T>& body, const MeshBvh& mesh, const Aabb& box, T maxSeparation,
                  Emit emit) {
   struct Group {
-    ManifoldT<T> first;
+    Vec3<T> normal;  // its first manifold's
     std::uint32_t sub;
     std::array<ContactPointT<T>, 16> points;
     int n = 0;
@@ -86,9 +86,9 @@ void collideMesh(const BodyT<T>& body, const MeshBvh& mesh, const Aabb& box, T m
                                : collide(body.box(), tri, maxSeparation, active[t]);
     if (m.count == 0) continue;
     auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
-      return x.first.normal.dot(m.normal) > T(kActiveEdgeCosine);
+      return x.normal.dot(m.normal) > T(kActiveEdgeCosine);
     });
-    if (g == groups.end()) g = groups.insert(groups.end(), Group{m, t, {}, 0});
+    if (g == groups.end()) g = groups.insert(groups.end(), Group{m.normal, t, {}, 0});
     for (int i = 0; i < m.count; ++i) {
       ContactPointT<T> p = m.points[std::size_t(i)];
       p.id += t * 1024;
@@ -99,7 +99,7 @@ void collideMesh(const BodyT<T>& body, const MeshBvh& mesh, const Aabb& box, T m
       if (g->n == int(g->points.size())) {  // full: down to the four that matter so far
         std::array<int, 4> keep{};
         std::array<ContactPointT<T>, 16> kept;
-        const int k = keepFour(g->points, g->n, g->first.normal, keep);
+        const int k = keepFour(g->points, g->n, g->normal, keep);
         for (int j = 0; j < k; ++j) kept[std::size_t(j)] = g->points[std::size_t(keep[j])];
         g->points = kept, g->n = k;
       }
@@ -109,7 +109,7 @@ void collideMesh(const BodyT<T>& body, const MeshBvh& mesh, const Aabb& box, T m
   for (Group& g : groups) {
     std::array<int, 4> keep{};
     ManifoldT<T> m;
-    m.normal = g.first.normal;
+    m.normal = g.normal;
     m.count = keepFour(g.points, g.n, m.normal, keep);
     for (int j = 0; j < m.count; ++j) m.points[std::size_t(j)] = g.points[std::size_t(keep[j])];
     emit(m, g.sub);
