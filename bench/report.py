@@ -628,8 +628,9 @@ def pyramid_plot(runs, tasks, title, filename):
                             color="grey" if peer else "black", linestyle="none")
                     # The paths share one y (the same bits): their names slanted, clear of each
                     # other.
-                    name = r.method if peer else ("plain loops" if r.method == "autovec" else
-                                                  r.path)
+                    name = (r.method if peer else "plain loops" if r.method == "autovec" else
+                            "fresh manifolds" if r.method.endswith("_fresh_manifolds") else
+                            r.path)
                     ax.annotate(name, (r.ms, y), fontsize=7, xytext=(3, 3),
                                 textcoords="offset points", rotation=0 if peer else 50)
             frame_axes(ax, f"B = {n} (numbers: substeps, or iterations)", label)

@@ -125,6 +125,11 @@ void registerRigidBenchmarks() {
     m.withError = base == 10;
     registerPerPath("pyramid", m.name, n, run(m, base), true, frames);
     registerBestPath("pyramid", "autovec", n, run(m, base, true), frames);
+    // The defaults with every manifold found afresh each step: what reuse costs in accuracy.
+    Model fresh = m;
+    fresh.name += "_fresh_manifolds";
+    fresh.settings.reuseManifolds = false, fresh.withError = false;
+    registerBestPath("pyramid", fresh.name, n, run(fresh, base), frames);
     for (Model o : others) {
       o.withError = base == 10;
       registerOnce("pyramid", o.name, "reference", n, run(o, base), frames);

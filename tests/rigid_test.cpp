@@ -366,6 +366,30 @@ TEST(Rigid, BodiesAddedAndRemovedMidRunKeepTheirHandles) {
   expectError([&] { world.bodies().position(hs[1]); }, "stale");
 }
 
+// A resting pair keeps its manifold from step to step (RigidSettings::reuseManifolds); a body
+// added in a removed body's handle slot, where that body was, must not inherit its contacts: a
+// sphere where a box rested touches the box below at one point, not at the box's four corners.
+TEST(Rigid, ABodyInARemovedBodysSlotGetsContactsOfItsOwn) {
+  RigidSettings s;
+  s.sleeping = false;
+  World world = groundWorld(s);
+  BodyDef d;
+  d.position = {0, 0.5f, 0};
+  world.bodies().add(d);
+  d.position = {0, 1.5f, 0};
+  const Handle top = world.bodies().add(d);
+  run(world, 120);
+  ASSERT_EQ(world.bodies().contactPointCount(), 8u);  // box on box, box on the ground
+  d.shape = BodyShape::kSphere;
+  d.radius = 0.5f;
+  d.position = world.bodies().position(top);
+  world.bodies().remove(top);
+  const Handle sphere = world.bodies().add(d);
+  ASSERT_EQ(sphere.slot, top.slot);  // the case under test
+  world.step();
+  EXPECT_EQ(world.bodies().contactPointCount(), 5u);
+}
+
 TEST(Rigid, BadInputIsRefusedAndChangesNothing) {
   World world = groundWorld();
   BodyDef good;

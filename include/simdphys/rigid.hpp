@@ -41,6 +41,17 @@ namespace detail {
 // appendix's arbiters), found by key (the pair's handle slots, which stay while bodies live)
 // and each point by its feature id. `sub` names one of a pair's several manifolds (a body against
 // a mesh has one per group of its triangles), else 0.
+// A pair of bodies' manifold as it was found, reused while the pair's relative pose stays near
+// the pose it was found at (Jolt's body pair cache): that pose (B's centre and orientation in A's
+// frame), the normal in A's frame, and each point's surface points in their own body's frame.
+template <class T>
+struct PairGeometryT {
+  T position[3], rotation[4];  // rotation: x, y, z, w
+  T normal[3];
+  T onA[4][3], onB[4][3];
+  bool valid = false;  // false for a body against an obstacle
+};
+
 template <class T>
 struct CachedManifoldT {
   std::uint64_t key;
@@ -48,6 +59,7 @@ struct CachedManifoldT {
   int count;
   std::uint32_t id[4];
   T impulse[4][3];  // normal, tangent 1, tangent 2
+  PairGeometryT<T> geometry;
 };
 }  // namespace detail
 
@@ -91,6 +103,11 @@ struct RigidSettings {
   float restitutionThreshold = 1.0f;  // m/s: slower impacts do not bounce
   float linearDamping = 0.0f, angularDamping = 0.0f;  // 1/s, >= 0
   bool warmStarting = true;
+  // A pair of bodies whose relative pose has moved less than 10 um and 0.1 degree since its
+  // manifold was found keeps that manifold, its points carried with the bodies and their
+  // separations measured again (Jolt's body pair cache, with tighter bounds: docs/rigid.md): a
+  // resting pile skips most box-box tests.
+  bool reuseManifolds = true;
   // Sleeping (Box2D's): an island (bodies joined by contacts) whose bodies have all moved slower
   // than sleepSpeed (m/s, the angular speed times the body's reach counted too) for timeToSleep
   // (s) sleeps: it is neither solved nor moved, costs no contacts among its bodies, and wakes

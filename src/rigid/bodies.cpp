@@ -167,6 +167,10 @@ void RigidBodies::remove(Handle h) {
   const std::uint32_t i = require(h, "RigidBodies::remove");
   wake(i);  // what it held up falls
   eraseSwap(handles_.remove(h, "RigidBodies::remove", "body"));
+  // Its contacts leave the cache: a body added later may take its slot.
+  std::erase_if(cache_, [&](const detail::CachedManifoldT<float>& m) {
+    return std::uint32_t(m.key >> 32) == h.slot || std::uint32_t(m.key) == h.slot;
+  });
 }
 
 void RigidBodies::setVec(Handle h, const char* where, std::size_t f, const char* name,

@@ -16,6 +16,7 @@
 #include "simdphys/obstacles.hpp"
 #include "src/reference/rigid/bodies-inl.hpp"
 #include "src/reference/rigid/clip-inl.hpp"
+#include "src/reference/rigid/pair_cache-inl.hpp"
 
 namespace simdphys::detail {
 
@@ -212,10 +213,14 @@ inline constexpr std::size_t kParallelPairs = 256;
 // after (colourContacts then orders them for the solver). `slots`: each
 // body's handle slot. maxSeparation of a pair: the speculative distance plus the distance the
 // two may close within dt. The pairs' manifolds are found on `threads` threads (0: OpenMP's
-// default), each into the pair's own slot, then taken in key order: the same at any count.
+// default), each into the pair's own slot, then taken in key order: the same at any count. A
+// pair whose manifold in `cache` (last step's, sorted by key) is still reusable takes it
+// (pair_cache-inl.hpp); each pair contact's geometry goes to `geometry`, for the next step's.
 template <class T>
-void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vector<BodyT<T>>& bodies,
-                  std::span<const std::uint32_t> slots, const Obstacles& obstacles,
+void findContacts(std::vector<ContactConstraintT<T>>& contacts,
+                  std::vector<PairGeometryT<T>>& geometry, const std::vector<BodyT<T>>& bodies,
+                  std::span<const std::uint32_t> slots,
+                  const std::vector<CachedManifoldT<T>>& cache, const Obstacles& obstacles,
                   const RigidSettings& s, T dt, int threads, T& deepest) {
   const auto n = std::uint32_t(bodies.size());
   const std::uint32_t dummy = n;
@@ -249,6 +254,13 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
   }
   std::sort(keyed.begin(), keyed.end(),
             [](const auto& l, const auto& r) { return l.first < r.first; });
+  // Each pair's cached manifold, by a walk through both in key order.
+  std::vector<const CachedManifoldT<T>*> previous(keyed.size(), nullptr);
+  for (std::size_t i = 0, j = 0; i < keyed.size(); ++i) {
+    while (j < cache.size() && cache[j].key < keyed[i].first) ++j;
+    if (j < cache.size() && cache[j].key == keyed[i].first && cache[j].sub == 0)
+      previous[i] = &cache[j];
+  }
   deepest = 0;
   const auto record = [&](const ManifoldT<T>& m) {
     for (int i = 0; i < m.count; ++i)
@@ -259,19 +271,29 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
   static thread_local std::vector<ManifoldT<T>> found;
   std::vector<ManifoldT<T>>& manifolds = found;
   manifolds.resize(keyed.size());
+  geometry.resize(keyed.size());
   const int t = keyed.size() < kParallelPairs ? 1 : threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(static) num_threads(t)
   for (std::size_t i = 0; i < keyed.size(); ++i) {
-    const Pair p = keyed[i].second;
-    manifolds[i] =
-        collideBody(bodies[p.a], bodies[p.b], T(s.speculativeDistance) + travel[p.a] + travel[p.b]);
+    const BodyT<T>&a = bodies[keyed[i].second.a], &b = bodies[keyed[i].second.b];
+    if (s.reuseManifolds && previous[i] && reusable(previous[i]->geometry, a, b)) {
+      manifolds[i] = reused(*previous[i], a, b);
+      geometry[i] = previous[i]->geometry;
+      continue;
+    }
+    const T maxSeparation =
+        T(s.speculativeDistance) + travel[keyed[i].second.a] + travel[keyed[i].second.b];
+    manifolds[i] = collideBody(a, b, maxSeparation);
+    geometry[i] = manifolds[i].count > 0 ? pairGeometry(manifolds[i], a, b) : PairGeometryT<T>{};
   }
   for (std::size_t i = 0; i < keyed.size(); ++i) {
     const auto& [key, p] = keyed[i];
     const BodyT<T>&a = bodies[p.a], &b = bodies[p.b];
     record(manifolds[i]);
+    if (manifolds[i].count == 0) continue;
     addConstraint(contacts, manifolds[i], p.a, p.b, a.x, b.x, std::sqrt(a.friction * b.friction),
                   std::max(a.restitution, b.restitution), false, key);
+    contacts.back().geometry = std::uint32_t(i);
   }
   const std::span<const ObstacleShape> shapes = obstacles.shapes();
   for (std::uint32_t i = 0; i < n; ++i) {

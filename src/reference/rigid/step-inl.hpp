@@ -55,6 +55,7 @@ void warmStartFrom(const std::vector<CachedManifoldT<T>>& cache,
 
 template <class T>
 void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
+                  const std::vector<PairGeometryT<T>>& geometry,
                   std::vector<CachedManifoldT<T>>& cache) {
   // The keys sorted with each contact's index, then the entries written in that order: sorting
   // 16-byte keys rather than the 80-byte entries.
@@ -72,7 +73,8 @@ void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
   for (std::size_t k = 0; k < order.size(); ++k) {
     const ContactConstraintT<T>& c = contacts[order[k].index];
     CachedManifoldT<T>& m = cache[k];
-    m = {c.key, c.sub, c.count, {}, {}};
+    m = {c.key, c.sub, c.count, {}, {}, {}};
+    if (c.geometry != ~0u) m.geometry = geometry[c.geometry];
     for (int i = 0; i < c.count; ++i) {
       const ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
       m.id[i] = p.id;
@@ -219,7 +221,8 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   T deepest = 0;
   // A thread's buffer, reused from step to step (rewritten whole: no state carries over).
   static thread_local std::vector<ContactConstraintT<T>> contacts;
-  findContacts(contacts, bodies, slots, obstacles, s, dt, threads, deepest);
+  static thread_local std::vector<PairGeometryT<T>> geometry;
+  findContacts(contacts, geometry, bodies, slots, cache, obstacles, s, dt, threads, deepest);
   if (s.warmStarting) warmStartFrom(cache, contacts);  // in findContacts' order: near key order
   const std::vector<std::uint32_t> colourBegin = colourContacts(contacts, bodies);
   stats.overflow = colourBegin[1];
@@ -275,7 +278,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
     b.v = solver[i].v, b.w = solver[i].w;
   }
   if (s.sleeping) updateSleep(bodies, slots, contacts, s, dt);
-  keepImpulses(contacts, cache);
+  keepImpulses(contacts, geometry, cache);
   return stats;
 }
 
