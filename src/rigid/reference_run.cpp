@@ -8,12 +8,13 @@ namespace simdphys::test {
 struct BodiesD::State {
   std::vector<detail::BodyT<double>> bodies;
   std::vector<std::uint32_t> slots;
-  std::vector<detail::CachedManifoldT<double>> cache;
+  std::vector<detail::CachedManifoldT<double>> cache, next;
 };
 
 BodiesD::BodiesD(const RigidBodies& bodies)
     : state_(new State{RigidBodies::Internals::load<double>(bodies),
                        RigidBodies::Internals::slots(bodies),
+                       {},
                        {}}) {}
 
 BodiesD::~BodiesD() = default;
@@ -21,10 +22,12 @@ BodiesD::~BodiesD() = default;
 void BodiesD::step(const World& world) {
   const WorldSettings& w = world.settings();
   const double dt = double(w.timeStep / float(w.substeps));
-  for (int sub = 0; sub < w.substeps; ++sub)
-    deepest_ = detail::stepState(state_->bodies, state_->slots, state_->cache, world.obstacles(),
-                                 world.bodies().settings(), dt)
+  for (int sub = 0; sub < w.substeps; ++sub) {
+    deepest_ = detail::stepState(state_->bodies, state_->slots, state_->cache, state_->next,
+                                 world.obstacles(), world.bodies().settings(), dt)
                    .deepest;
+    state_->cache.swap(state_->next);
+  }
 }
 
 std::vector<Vec3d> BodiesD::positions() const {

@@ -77,13 +77,16 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt, 
   using namespace detail;
   std::vector<BodyT<float>> state = Internals::load<float>(bodies);
   const std::vector<std::uint32_t> slots = Internals::slots(bodies);
-  std::vector<CachedManifoldT<float>> cache = bodies.cache_;
+  // The next cache: a thread's buffer, swapped with the bodies' on success (so each keeps its
+  // pages from step to step).
+  static thread_local std::vector<CachedManifoldT<float>> next;
+  const auto& cache = bodies.cache_;
   // The contact passes on the active path: the reference on Eigen, or the kernels over rows
   // (or their plain loops), the rest of the step shared.
   const RigidStepStats stats =
       referencePathActive()
-          ? stepState(state, slots, cache, obstacles, bodies.settings(), dt, threads)
-          : stepState(state, slots, cache, obstacles, bodies.settings(), dt, threads,
+          ? stepState(state, slots, cache, next, obstacles, bodies.settings(), dt, threads)
+          : stepState(state, slots, cache, next, obstacles, bodies.settings(), dt, threads,
                       kernelPasses(state.size()));
   // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
   for (std::size_t i = 0; i < state.size(); ++i) {
@@ -93,7 +96,7 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt, 
     requireFiniteField(state[i].w, body, "angular velocity after the step");
   }
   Internals::store(bodies, state);
-  bodies.cache_ = std::move(cache);
+  bodies.cache_.swap(next);
   bodies.deepest_ = float(stats.deepest);
   bodies.manifolds_ = stats.manifolds;
   bodies.points_ = stats.points;

@@ -190,8 +190,6 @@ void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> s
       b.island = 0, b.sleepTime = 0;
 }
 
-// One step of dt: bodies (their positions, orientations and velocities) move; `cache` holds
-// last step's impulses and receives this step's.
 // The contact passes on Eigen, one contact at a time: the reference. A kernel's passes
 // (src/rigid/contact_rows.hpp) take the same calls.
 template <class T>
@@ -212,9 +210,12 @@ struct ReferencePasses {
   void finish(std::vector<ContactConstraintT<T>>&) {}
 };
 
+// One step of dt: bodies (their positions, orientations and velocities) move; `cache` holds
+// last step's manifolds (their impulses and geometry), `nextCache` receives this step's.
 template <class T, class Passes = ReferencePasses<T>>
 RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> slots,
-                         std::vector<CachedManifoldT<T>>& cache, const Obstacles& obstacles,
+                         const std::vector<CachedManifoldT<T>>& cache,
+                         std::vector<CachedManifoldT<T>>& nextCache, const Obstacles& obstacles,
                          const RigidSettings& s, T dt, int threads = 1,
                          Passes&& passes = Passes()) {
   RigidStepStats stats;
@@ -278,7 +279,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
     b.v = solver[i].v, b.w = solver[i].w;
   }
   if (s.sleeping) updateSleep(bodies, slots, contacts, s, dt);
-  keepImpulses(contacts, geometry, cache);
+  keepImpulses(contacts, geometry, nextCache);
   return stats;
 }
 
