@@ -63,9 +63,18 @@ struct ContactRows {
     kPointFields
   };
   static constexpr std::size_t kFields = kPoint + 4 * kPointFields;
-  float* f[kFields];
+  // Blocks of kBlockLanes lanes (kStreamPad, the widest vector), each block's fields one after
+  // another (Box2D v3's wide constraint structs): a vector's fields lie at fixed offsets from its
+  // block, one cache-friendly run of kFields * 64 bytes.
+  static constexpr std::size_t kBlockLanes = 16;
+  static constexpr std::size_t kBlock = kFields * kBlockLanes;
+  // The first field of `lane`'s block, at the lane; field k is then k * kBlockLanes further.
+  float* lanes(std::size_t lane) const {
+    return data + lane / kBlockLanes * kBlock + lane % kBlockLanes;
+  }
+  float* data;
   const std::uint32_t *a, *b;       // the bodies of each lane (b: the dummy for an obstacle)
-  const std::uint32_t* batchBegin;  // batches + 1 lane offsets, each a multiple of kStreamPad
+  const std::uint32_t* batchBegin;  // batches + 1 lane offsets, each a multiple of kBlockLanes
   std::size_t batches;
 };
 

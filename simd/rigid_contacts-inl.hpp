@@ -26,6 +26,15 @@ HWY_INLINE auto recordOffsets(D, const std::uint32_t* index) {
   return hn::Mul(i, hn::Set(di, std::int32_t(sizeof(core::SolverBody) / sizeof(float))));
 }
 
+// A vector's fields in the rows (core::ContactRows' blocks): field k at k * kBlockLanes floats
+// past the first, fixed offsets from one pointer.
+struct RowLanes {
+  float* first;
+  float* operator[](std::size_t field) const {
+    return first + field * core::ContactRows::kBlockLanes;
+  }
+};
+
 template <class D, class V = LaneOf<D>>
 HWY_INLINE Vec3L<V> cross(const Vec3L<V>& a, const Vec3L<V>& b) {
   return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
@@ -44,7 +53,7 @@ struct LaneBodies {
 
   // The lane's body A (or B) of the rows at `lane`; its motion (dp, dq) read only if `motion`.
   LaneBodies(D d, const core::SolverBody* bodies, const core::ContactRows& rows, std::size_t lane,
-             bool isB, bool motion)
+             const RowLanes& r, bool isB, bool motion)
       : at(recordOffsets(d, (isB ? rows.b : rows.a) + lane)) {
     const float* base = reinterpret_cast<const float*>(bodies);
     const auto field = [&](std::size_t offset) { return gatherField(d, base + offset, at); };
@@ -56,9 +65,9 @@ struct LaneBodies {
     for (int k = 0; k < 4; ++k)
       dq[k] = motion ? field(offsetof(core::SolverBody, dq) / 4 + std::size_t(k)) : Zero(d);
     using R = core::ContactRows;
-    invMass = Load(d, rows.f[isB ? R::invMassB : R::invMassA] + lane);
+    invMass = Load(d, r[isB ? R::invMassB : R::invMassA]);
     for (std::size_t k = 0; k < 6; ++k)
-      inertia[k] = Load(d, rows.f[(isB ? R::inertiaB : R::inertiaA) + k] + lane);
+      inertia[k] = Load(d, r[(isB ? R::inertiaB : R::inertiaA) + k]);
   }
   void store(D d, core::SolverBody* bodies) const {
     float* base = reinterpret_cast<float*>(bodies);
@@ -85,8 +94,8 @@ struct LaneBodies {
 };
 
 template <class D, class V = LaneOf<D>>
-HWY_INLINE Vec3L<V> load3(D d, float* const* f, std::size_t first, std::size_t lane) {
-  return {{Load(d, f[first] + lane), Load(d, f[first + 1] + lane), Load(d, f[first + 2] + lane)}};
+HWY_INLINE Vec3L<V> load3(D d, const RowLanes& r, std::size_t first) {
+  return {{Load(d, r[first]), Load(d, r[first + 1]), Load(d, r[first + 2])}};
 }
 
 template <class D, class V = LaneOf<D>>
@@ -119,16 +128,15 @@ void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
   using V = LaneOf<D>;
   using R = core::ContactRows;
   forEachVector(d, rows, [&](std::size_t lane) {
-    LaneBodies<D> a(d, bodies, rows, lane, false, false), b(d, bodies, rows, lane, true, false);
-    const Vec3L<V> n = load3(d, rows.f, R::nx, lane), t1 = load3(d, rows.f, R::t1x, lane),
-                   t2 = load3(d, rows.f, R::t2x, lane);
+    const RowLanes r{rows.lanes(lane)};
+    LaneBodies<D> a(d, bodies, rows, lane, r, false, false),
+        b(d, bodies, rows, lane, r, true, false);
+    const Vec3L<V> n = load3(d, r, R::nx), t1 = load3(d, r, R::t1x), t2 = load3(d, r, R::t2x);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
-                     rB = load3(d, rows.f, p + R::rBx, lane);
-      const Vec3L<V> P = n * Load(d, rows.f[p + R::normalImpulse] + lane) +
-                         t1 * Load(d, rows.f[p + R::tangent1] + lane) +
-                         t2 * Load(d, rows.f[p + R::tangent2] + lane);
+      const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
+      const Vec3L<V> P = n * Load(d, r[p + R::normalImpulse]) + t1 * Load(d, r[p + R::tangent1]) +
+                         t2 * Load(d, r[p + R::tangent2]);
       applyImpulse(a, b, rA, rB, P);
     }
     a.store(d, bodies);
@@ -145,45 +153,44 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
           minPush = Set(d, -pass.maxPush), baumgarte = Set(d, pass.baumgarte * pass.invH),
           slop = Set(d, pass.slop);
   forEachVector(d, rows, [&](std::size_t lane) {
-    LaneBodies<D> a(d, bodies, rows, lane, false, true), b(d, bodies, rows, lane, true, true);
-    const Vec3L<V> n = load3(d, rows.f, R::nx, lane);
+    const RowLanes r{rows.lanes(lane)};
+    LaneBodies<D> a(d, bodies, rows, lane, r, false, true), b(d, bodies, rows, lane, r, true, true);
+    const Vec3L<V> n = load3(d, r, R::nx);
     V biasRate = zero, massScale = one, impulseScale = zero;
     if (pass.bias == core::ContactPass::kSoft) {
-      biasRate = Load(d, rows.f[R::biasRate] + lane);
-      massScale = Load(d, rows.f[R::massScale] + lane);
-      impulseScale = Load(d, rows.f[R::impulseScale] + lane);
+      biasRate = Load(d, r[R::biasRate]);
+      massScale = Load(d, r[R::massScale]);
+      impulseScale = Load(d, r[R::impulseScale]);
     }
-    const Vec3L<V> t[2] = {load3(d, rows.f, R::t1x, lane), load3(d, rows.f, R::t2x, lane)};
-    const V friction = Load(d, rows.f[R::friction] + lane);
+    const Vec3L<V> t[2] = {load3(d, r, R::t1x), load3(d, r, R::t2x)};
+    const V friction = Load(d, r[R::friction]);
     for (std::size_t j = 0; j < 4; ++j) {
       const std::size_t k = pass.reverse ? 3 - j : j;
       const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
-                     rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
       // The reference's cone clamp (solver-inl.hpp), in the same order of operations.
-      const V limit = friction * Load(d, rows.f[p + R::normalImpulse] + lane);
+      const V limit = friction * Load(d, r[p + R::normalImpulse]);
       V old[2], total[2];
       for (std::size_t i = 0; i < 2; ++i) {
         const V vt = relativeAlong(a, b, rA, rB, t[i]);
-        old[i] = Load(d, rows.f[p + R::tangent1 + i] + lane);
-        total[i] = old[i] - Load(d, rows.f[p + R::tangentMass1 + i] + lane) * vt;
+        old[i] = Load(d, r[p + R::tangent1 + i]);
+        total[i] = old[i] - Load(d, r[p + R::tangentMass1 + i]) * vt;
       }
       const V squared = total[0] * total[0] + total[1] * total[1];
       const auto over = Gt(squared, limit * limit);  // then squared > 0
       const V scale = limit / Sqrt(IfThenElse(over, squared, Set(d, 1.0f)));
       for (std::size_t i = 0; i < 2; ++i) {
         total[i] = IfThenElse(over, total[i] * scale, total[i]);
-        Store(total[i], d, rows.f[p + R::tangent1 + i] + lane);
+        Store(total[i], d, r[p + R::tangent1 + i]);
       }
       applyImpulse(a, b, rA, rB, t[0] * (total[0] - old[0]) + t[1] * (total[1] - old[1]));
     }
     for (std::size_t j = 0; j < 4; ++j) {
       const std::size_t k = pass.reverse ? 3 - j : j;
       const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
-                     rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
       const Vec3L<V> moved = (b.dp + b.turned(rB)) - (a.dp + a.turned(rA));
-      const V sep = Load(d, rows.f[p + R::base] + lane) + dot(moved, n);
+      const V sep = Load(d, r[p + R::base]) + dot(moved, n);
       V bias = zero, ms = one, is = zero;
       if (pass.bias == core::ContactPass::kSoft) {
         bias = Max(biasRate * sep, minPush), ms = massScale, is = impulseScale;
@@ -195,15 +202,15 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
       ms = IfThenElse(speculative, one, ms);
       is = IfThenElse(speculative, zero, is);
       const V vn = relativeAlong(a, b, rA, rB, n);
-      float* accumulated = rows.f[p + R::normalImpulse] + lane;
+      float* accumulated = r[p + R::normalImpulse];
       const V old = Load(d, accumulated);
-      const V mass = Load(d, rows.f[p + R::normalMass] + lane);
+      const V mass = Load(d, r[p + R::normalMass]);
       const V total = Max(old + (Neg(mass * ms * (vn + bias)) - is * old), zero);
       const V impulse = total - old;
       Store(total, d, accumulated);
-      float* maxNormal = rows.f[p + R::maxNormal] + lane;
+      float* maxNormal = r[p + R::maxNormal];
       Store(Max(Load(d, maxNormal), impulse), d, maxNormal);
-      float* relative = rows.f[p + R::relative] + lane;
+      float* relative = r[p + R::relative];
       Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d,
             relative);
       applyImpulse(a, b, rA, rB, n * impulse);
@@ -219,25 +226,24 @@ void restitutionT(D d, const core::ContactRows& rows, core::SolverBody* bodies, 
   using R = core::ContactRows;
   const V zero = Zero(d), minusThreshold = Set(d, -threshold);
   forEachVector(d, rows, [&](std::size_t lane) {
-    const V e = Load(d, rows.f[R::restitution] + lane);
+    const RowLanes r{rows.lanes(lane)};
+    const V e = Load(d, r[R::restitution]);
     if (AllTrue(d, Eq(e, zero))) return;
-    LaneBodies<D> a(d, bodies, rows, lane, false, false), b(d, bodies, rows, lane, true, false);
-    const Vec3L<V> n = load3(d, rows.f, R::nx, lane);
+    LaneBodies<D> a(d, bodies, rows, lane, r, false, false),
+        b(d, bodies, rows, lane, r, true, false);
+    const Vec3L<V> n = load3(d, r, R::nx);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
-      const V relative = Load(d, rows.f[p + R::relative] + lane);
-      const auto active =
-          And(Not(Eq(e, zero)), And(Le(relative, minusThreshold),
-                                    Not(Eq(Load(d, rows.f[p + R::maxNormal] + lane), zero))));
+      const V relative = Load(d, r[p + R::relative]);
+      const auto active = And(Not(Eq(e, zero)), And(Le(relative, minusThreshold),
+                                                    Not(Eq(Load(d, r[p + R::maxNormal]), zero))));
       if (AllFalse(d, active)) continue;
-      const Vec3L<V> rA = load3(d, rows.f, p + R::rAx, lane),
-                     rB = load3(d, rows.f, p + R::rBx, lane);
+      const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
       const V vn = relativeAlong(a, b, rA, rB, n);
-      float* accumulated = rows.f[p + R::normalImpulse] + lane;
+      float* accumulated = r[p + R::normalImpulse];
       const V old = Load(d, accumulated);
       const V total = IfThenElse(
-          active, Max(old - Load(d, rows.f[p + R::normalMass] + lane) * (vn + e * relative), zero),
-          old);
+          active, Max(old - Load(d, r[p + R::normalMass]) * (vn + e * relative), zero), old);
       Store(total, d, accumulated);
       applyImpulse(a, b, rA, rB, n * (total - old));
     }

@@ -22,7 +22,8 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
   for (const auto& [first, last] : ranges)
     batchBegin_.push_back(batchBegin_.back() + std::uint32_t(paddedSize(last - first)));
   lanes_ = batchBegin_.back();
-  fields_.assign(R::kFields * lanes_, 0.0f);
+  static_assert(R::kBlockLanes == kStreamPad);
+  fields_.assign(R::kBlock * (lanes_ / R::kBlockLanes), 0.0f);
   // Padding lanes join the static dummy to itself: no mass, no impulse, nothing moves.
   a_.assign(lanes_, dummy_), b_.assign(lanes_, dummy_);
   laneOf_.resize(contacts.size());
@@ -31,9 +32,9 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
     for (std::uint32_t i = first; i < last; ++i) laneOf_[i] = batchBegin_[batch] + (i - first);
     ++batch;
   }
-  float* const f = fields_.data();
+  const core::ContactRows r = rows();
   const auto at = [&](std::size_t field, std::size_t lane) -> float& {
-    return f[field * lanes_ + lane];
+    return r.lanes(lane)[field * R::kBlockLanes];
   };
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ContactConstraintT<float>& c = contacts[i];
@@ -78,7 +79,7 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
 
 core::ContactRows KernelPasses::rows() {
   core::ContactRows r;
-  for (std::size_t k = 0; k < R::kFields; ++k) r.f[k] = fields_.data() + k * lanes_;
+  r.data = fields_.data();
   r.a = a_.data(), r.b = b_.data();
   r.batchBegin = batchBegin_.data();
   r.batches = batchBegin_.size() - 1;
@@ -127,15 +128,16 @@ void KernelPasses::restitution(std::vector<ContactConstraintT<float>>&,
   fromRecords(bodies);
 }
 
-void KernelPasses::finish(std::vector<ContactConstraintT<float>>& contacts) const {
-  const float* const f = fields_.data();
+void KernelPasses::finish(std::vector<ContactConstraintT<float>>& contacts) {
+  const core::ContactRows r = rows();
   for (std::size_t i = 0; i < contacts.size(); ++i)
     for (int j = 0; j < contacts[i].count; ++j) {
       ContactPointConstraintT<float>& q = contacts[i].points[std::size_t(j)];
-      const std::size_t o = R::kPoint + std::size_t(j) * R::kPointFields, lane = laneOf_[i];
-      q.normalImpulse = f[(o + R::normalImpulse) * lanes_ + lane];
-      q.tangentImpulse[0] = f[(o + R::tangent1) * lanes_ + lane];
-      q.tangentImpulse[1] = f[(o + R::tangent2) * lanes_ + lane];
+      const float* f =
+          r.lanes(laneOf_[i]) + (R::kPoint + std::size_t(j) * R::kPointFields) * R::kBlockLanes;
+      q.normalImpulse = f[R::normalImpulse * R::kBlockLanes];
+      q.tangentImpulse[0] = f[R::tangent1 * R::kBlockLanes];
+      q.tangentImpulse[1] = f[R::tangent2 * R::kBlockLanes];
     }
 }
 

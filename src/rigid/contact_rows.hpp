@@ -27,7 +27,7 @@ class KernelPasses {
   void restitution(std::vector<ContactConstraintT<float>>&, std::vector<SolverBodyT<float>>& b,
                    float threshold);
   // The accumulated impulses back into the contacts, for the next step's warm start.
-  void finish(std::vector<ContactConstraintT<float>>& contacts) const;
+  void finish(std::vector<ContactConstraintT<float>>& contacts);
 
  private:
   core::ContactRows rows();
@@ -36,7 +36,7 @@ class KernelPasses {
 
   bool plainLoops_;
   std::uint32_t dummy_;
-  AlignedVector<float> fields_;         // kFields streams of lanes_ floats each
+  AlignedVector<float> fields_;         // the rows' blocks (core::ContactRows)
   AlignedVector<std::uint32_t> a_, b_;  // each lane's bodies
   std::vector<std::uint32_t> batchBegin_;
   std::vector<std::uint32_t> laneOf_;  // each contact's lane
