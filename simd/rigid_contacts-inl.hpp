@@ -3,28 +3,109 @@
 // The arithmetic is src/reference/rigid/solver-inl.hpp's, point by point. Included inside each
 // target's namespace (no include guard, by design), after simd/particle_lanes-inl.hpp.
 
-// The bodies' records read and written a field at a time for the lanes' bodies: gathered and
-// scattered through `at` (each lane's record offset, in floats) on vectors, indexed on one lane.
-inline float gatherField(ScalarLane, const float* base, std::uint32_t at) { return base[at]; }
-inline void scatterField(float x, ScalarLane, float* base, std::uint32_t at) { base[at] = x; }
-template <class D, class VI>
-HWY_INLINE auto gatherField(D d, const float* base, VI at) {
-  return hn::GatherIndex(d, base, at);
+// The lanes' body records (16 floats: v, w, dp, dq, pad) as fields, field k of every lane's
+// record in f[k]. A vector loads each lane's record whole, a row per lane, and transposes the
+// rows in registers (Box2D v3's 8x8 transpose), rather than gathering field by field; it writes
+// back fields 0 to 7 (v, w and dp's first two, unchanged) the same way. One lane reads its own.
+inline constexpr std::size_t kRecordFloats = sizeof(core::SolverBody) / sizeof(float);
+static_assert(kRecordFloats == 16);
+
+inline void loadRecords(ScalarLane, const core::SolverBody* bodies, const std::uint32_t* index,
+                        float* f) {
+  const float* record = reinterpret_cast<const float*>(bodies + index[0]);
+  for (std::size_t k = 0; k < kRecordFloats; ++k) f[k] = record[k];
 }
-template <class D, class V, class VI>
-HWY_INLINE void scatterField(V x, D d, float* base, VI at) {
-  hn::ScatterIndex(x, d, base, at);
+inline void storeRecords(ScalarLane, core::SolverBody* bodies, const std::uint32_t* index,
+                         const float* f) {
+  float* record = reinterpret_cast<float*>(bodies + index[0]);
+  for (std::size_t k = 0; k < 8; ++k) record[k] = f[k];
 }
 
-inline std::uint32_t recordOffsets(ScalarLane, const std::uint32_t* index) {
-  return index[0] * std::uint32_t(sizeof(core::SolverBody) / sizeof(float));
+#if HWY_TARGET != HWY_SCALAR
+// r[0..N) rows of N floats transposed in place: 4x4 within each 128-bit block, then the blocks.
+template <class D, class V = LaneOf<D>>
+HWY_INLINE void transposeSquare(D d, V* r) {
+  constexpr std::size_t N = hn::MaxLanes(D());
+  static_assert(N == 4 || N == 8 || N == 16);
+  const hn::Repartition<double, D> d64;
+  const auto lower64 = [&](V a, V b) {
+    return hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, a), hn::BitCast(d64, b)));
+  };
+  const auto upper64 = [&](V a, V b) {
+    return hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, a), hn::BitCast(d64, b)));
+  };
+  for (std::size_t g = 0; g < N; g += 4) {
+    const V t0 = hn::InterleaveLower(d, r[g], r[g + 1]),
+            t1 = hn::InterleaveLower(d, r[g + 2], r[g + 3]);
+    const V t2 = hn::InterleaveUpper(d, r[g], r[g + 1]),
+            t3 = hn::InterleaveUpper(d, r[g + 2], r[g + 3]);
+    r[g] = lower64(t0, t1), r[g + 1] = upper64(t0, t1);
+    r[g + 2] = lower64(t2, t3), r[g + 3] = upper64(t2, t3);
+  }
+  // Now block b of r[4 g + k] holds column 4 b + k of rows 4 g to 4 g + 3.
+  if constexpr (N == 8) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      const V lo = r[k], hi = r[4 + k];
+      r[k] = hn::ConcatLowerLower(d, hi, lo), r[4 + k] = hn::ConcatUpperUpper(d, hi, lo);
+    }
+  } else if constexpr (N == 16) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      const V o0 = r[k], o1 = r[4 + k], o2 = r[8 + k], o3 = r[12 + k];
+      const V x0 = hn::OddEvenBlocks(hn::SwapAdjacentBlocks(o1), o0);
+      const V x1 = hn::OddEvenBlocks(o1, hn::SwapAdjacentBlocks(o0));
+      const V y0 = hn::OddEvenBlocks(hn::SwapAdjacentBlocks(o3), o2);
+      const V y1 = hn::OddEvenBlocks(o3, hn::SwapAdjacentBlocks(o2));
+      r[k] = hn::ConcatLowerLower(d, y0, x0), r[4 + k] = hn::ConcatLowerLower(d, y1, x1);
+      r[8 + k] = hn::ConcatUpperUpper(d, y0, x0), r[12 + k] = hn::ConcatUpperUpper(d, y1, x1);
+    }
+  }
 }
-template <class D>
-HWY_INLINE auto recordOffsets(D, const std::uint32_t* index) {
-  const hn::RebindToSigned<D> di;
-  const auto i = hn::BitCast(di, hn::LoadU(hn::RebindToUnsigned<D>(), index));
-  return hn::Mul(i, hn::Set(di, std::int32_t(sizeof(core::SolverBody) / sizeof(float))));
+
+template <class D, class V = LaneOf<D>>
+HWY_INLINE void loadRecords(D d, const core::SolverBody* bodies, const std::uint32_t* index, V* f) {
+  constexpr std::size_t N = hn::MaxLanes(D());
+  const float* base = reinterpret_cast<const float*>(bodies);
+  for (std::size_t c = 0; c < kRecordFloats; c += N) {
+    for (std::size_t i = 0; i < N; ++i)
+      f[c + i] = hn::LoadU(d, base + index[i] * kRecordFloats + c);
+    transposeSquare(d, f + c);
+  }
 }
+
+template <class D, class V = LaneOf<D>>
+HWY_INLINE void storeRecords(D d, core::SolverBody* bodies, const std::uint32_t* index,
+                             const V* f) {
+  constexpr std::size_t N = hn::MaxLanes(D());
+  float* base = reinterpret_cast<float*>(bodies);
+  if constexpr (N == 16) {  // fields 8 to 15 ride along as zeros; each row's lower half stored
+    V r[16];
+    for (std::size_t k = 0; k < 16; ++k) r[k] = k < 8 ? f[k] : hn::Zero(d);
+    transposeSquare(d, r);
+    const hn::Half<D> dh;
+    for (std::size_t i = 0; i < N; ++i)
+      hn::StoreU(hn::LowerHalf(dh, r[i]), dh, base + index[i] * kRecordFloats);
+  } else {
+    for (std::size_t c = 0; c < 8; c += N) {
+      V r[N];
+      for (std::size_t k = 0; k < N; ++k) r[k] = f[c + k];
+      transposeSquare(d, r);
+      for (std::size_t i = 0; i < N; ++i) hn::StoreU(r[i], d, base + index[i] * kRecordFloats + c);
+    }
+  }
+}
+#else  // one lane a vector: the record read and written as one lane does
+template <class D, class V = LaneOf<D>>
+HWY_INLINE void loadRecords(D d, const core::SolverBody* bodies, const std::uint32_t* index, V* f) {
+  const float* record = reinterpret_cast<const float*>(bodies + index[0]);
+  for (std::size_t k = 0; k < kRecordFloats; ++k) f[k] = hn::Set(d, record[k]);
+}
+template <class D, class V = LaneOf<D>>
+HWY_INLINE void storeRecords(D d, core::SolverBody* bodies, const std::uint32_t* index,
+                             const V* f) {
+  float* record = reinterpret_cast<float*>(bodies + index[0]);
+  for (std::size_t k = 0; k < 8; ++k) record[k] = hn::GetLane(f[k]);
+}
+#endif
 
 // A vector's fields in the rows (core::ContactRows' blocks): field k at k * kBlockLanes floats
 // past the first, fixed offsets from one pointer.
@@ -44,37 +125,28 @@ HWY_INLINE Vec3L<V> cross(const Vec3L<V>& a, const Vec3L<V>& b) {
 template <class D>
 struct LaneBodies {
   using V = LaneOf<D>;
-  using I = decltype(recordOffsets(D(), static_cast<const std::uint32_t*>(nullptr)));
-  I at;
+  const std::uint32_t* index;  // each lane's body
   Vec3L<V> v, w, dp;
   V dq[4];
   V invMass;
   V inertia[6];  // xx, xy, xz, yy, yz, zz
 
-  // The lane's body A (or B) of the rows at `lane`; its motion (dp, dq) read only if `motion`.
+  // The lane's body A (or B) of the rows at `lane`.
   LaneBodies(D d, const core::SolverBody* bodies, const core::ContactRows& rows, std::size_t lane,
-             const RowLanes& r, bool isB, bool motion)
-      : at(recordOffsets(d, (isB ? rows.b : rows.a) + lane)) {
-    const float* base = reinterpret_cast<const float*>(bodies);
-    const auto field = [&](std::size_t offset) { return gatherField(d, base + offset, at); };
-    for (int k = 0; k < 3; ++k) {
-      v[k] = field(offsetof(core::SolverBody, v) / 4 + std::size_t(k));
-      w[k] = field(offsetof(core::SolverBody, w) / 4 + std::size_t(k));
-      dp[k] = motion ? field(offsetof(core::SolverBody, dp) / 4 + std::size_t(k)) : Zero(d);
-    }
-    for (int k = 0; k < 4; ++k)
-      dq[k] = motion ? field(offsetof(core::SolverBody, dq) / 4 + std::size_t(k)) : Zero(d);
+             const RowLanes& r, bool isB)
+      : index((isB ? rows.b : rows.a) + lane) {
+    V f[kRecordFloats];
+    loadRecords(d, bodies, index, f);
+    v = {{f[0], f[1], f[2]}}, w = {{f[3], f[4], f[5]}}, dp = {{f[6], f[7], f[8]}};
+    for (std::size_t k = 0; k < 4; ++k) dq[k] = f[9 + k];
     using R = core::ContactRows;
     invMass = Load(d, r[isB ? R::invMassB : R::invMassA]);
     for (std::size_t k = 0; k < 6; ++k)
       inertia[k] = Load(d, r[(isB ? R::inertiaB : R::inertiaA) + k]);
   }
   void store(D d, core::SolverBody* bodies) const {
-    float* base = reinterpret_cast<float*>(bodies);
-    for (int k = 0; k < 3; ++k) {
-      scatterField(v[k], d, base + offsetof(core::SolverBody, v) / 4 + std::size_t(k), at);
-      scatterField(w[k], d, base + offsetof(core::SolverBody, w) / 4 + std::size_t(k), at);
-    }
+    const V f[8] = {v[0], v[1], v[2], w[0], w[1], w[2], dp[0], dp[1]};
+    storeRecords(d, bodies, index, f);
   }
   // The world inverse inertia times x (the reference's Mat3 product: a row's dot with x, in
   // Eigen's order x + (y + z)).
@@ -129,8 +201,7 @@ void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
   using R = core::ContactRows;
   forEachVector(d, rows, [&](std::size_t lane) {
     const RowLanes r{rows.lanes(lane)};
-    LaneBodies<D> a(d, bodies, rows, lane, r, false, false),
-        b(d, bodies, rows, lane, r, true, false);
+    LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
     const Vec3L<V> n = load3(d, r, R::nx), t1 = load3(d, r, R::t1x), t2 = load3(d, r, R::t2x);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
@@ -154,7 +225,7 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
           slop = Set(d, pass.slop);
   forEachVector(d, rows, [&](std::size_t lane) {
     const RowLanes r{rows.lanes(lane)};
-    LaneBodies<D> a(d, bodies, rows, lane, r, false, true), b(d, bodies, rows, lane, r, true, true);
+    LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
     const Vec3L<V> n = load3(d, r, R::nx);
     V biasRate = zero, massScale = one, impulseScale = zero;
     if (pass.bias == core::ContactPass::kSoft) {
@@ -229,8 +300,7 @@ void restitutionT(D d, const core::ContactRows& rows, core::SolverBody* bodies, 
     const RowLanes r{rows.lanes(lane)};
     const V e = Load(d, r[R::restitution]);
     if (AllTrue(d, Eq(e, zero))) return;
-    LaneBodies<D> a(d, bodies, rows, lane, r, false, false),
-        b(d, bodies, rows, lane, r, true, false);
+    LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
     const Vec3L<V> n = load3(d, r, R::nx);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
