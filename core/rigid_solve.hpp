@@ -36,6 +36,7 @@ struct ContactRows {
     biasRate,
     massScale,
     impulseScale,
+    count,  // the manifold's points (a float); the points past it are inert (all zero)
     // The bodies' inverse masses and world inverse inertias (xx, xy, xz, yy, yz, zz), fixed for
     // the step: read with the lane's other fields rather than gathered from the records.
     invMassA,

@@ -342,8 +342,11 @@ extern const Kernel<void(const ClothStepInput&)> stepCloth, stepClothAutovec;
 // ---- rigid bodies (simd/rigid.cpp) -----------------------------------------------------------
 // The contact passes of a substep over the rows, batch after batch (each batch's lanes share no
 // moving body), moving the bodies' velocities: warm starting (the accumulated impulses applied),
-// a solve pass (normal impulses with the pass's bias, then friction), and restitution. They
-// follow the reference's arithmetic (src/reference/rigid/solver-inl.hpp) lane-wide.
+// a solve pass (normal impulses with the pass's bias, then friction), and restitution; and once
+// a step, before them, the points' masses and normal velocities. They follow the reference's
+// arithmetic (src/reference/rigid/solver-inl.hpp) lane-wide.
+extern const Kernel<void(const core::ContactRows&, const core::SolverBody*)> prepareContacts,
+    prepareContactsAutovec;
 extern const Kernel<void(const core::ContactRows&, core::SolverBody*)> warmStartContacts,
     warmStartContactsAutovec;
 extern const Kernel<void(const core::ContactRows&, core::SolverBody*, const core::ContactPass&)>

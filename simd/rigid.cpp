@@ -20,6 +20,9 @@ SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/rigid_contacts-inl.hpp"
 
+void PrepareContacts(const core::ContactRows& rows, const core::SolverBody* bodies) {
+  prepareT(hn::ScalableTag<float>(), rows, bodies);
+}
 void WarmStartContacts(const core::ContactRows& rows, core::SolverBody* bodies) {
   warmStartT(hn::ScalableTag<float>(), rows, bodies);
 }
@@ -29,6 +32,9 @@ void SolveContacts(const core::ContactRows& rows, core::SolverBody* bodies,
 }
 void RestituteContacts(const core::ContactRows& rows, core::SolverBody* bodies, float threshold) {
   restitutionT(hn::ScalableTag<float>(), rows, bodies, threshold);
+}
+void PrepareContactsAutovec(const core::ContactRows& rows, const core::SolverBody* bodies) {
+  prepareT(ScalarLane(), rows, bodies);
 }
 void WarmStartContactsAutovec(const core::ContactRows& rows, core::SolverBody* bodies) {
   warmStartT(ScalarLane(), rows, bodies);
@@ -46,9 +52,11 @@ SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
 namespace simdphys::simd {
+SIMDPHYS_EXPORT(PrepareContacts, prepareContacts);
 SIMDPHYS_EXPORT(WarmStartContacts, warmStartContacts);
 SIMDPHYS_EXPORT(SolveContacts, solveContacts);
 SIMDPHYS_EXPORT(RestituteContacts, restituteContacts);
+SIMDPHYS_EXPORT(PrepareContactsAutovec, prepareContactsAutovec);
 SIMDPHYS_EXPORT(WarmStartContactsAutovec, warmStartContactsAutovec);
 SIMDPHYS_EXPORT(SolveContactsAutovec, solveContactsAutovec);
 SIMDPHYS_EXPORT(RestituteContactsAutovec, restituteContactsAutovec);

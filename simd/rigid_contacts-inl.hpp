@@ -195,6 +195,43 @@ HWY_INLINE void forEachVector(D d, const core::ContactRows& rows, F&& f) {
       f(lane);
 }
 
+// The effective mass along dir at anchors rA, rB (the reference's effectiveMass); 0 where the
+// lanes have no mass along it.
+template <class D, class V = LaneOf<D>>
+HWY_INLINE V effectiveMass(D d, const LaneBodies<D>& a, const LaneBodies<D>& b, const Vec3L<V>& rA,
+                           const Vec3L<V>& rB, const Vec3L<V>& dir) {
+  const Vec3L<V> ra = cross<D>(rA, dir), rb = cross<D>(rB, dir);
+  const V k = a.invMass + b.invMass + dot(ra, a.inertiaTimes(ra)) + dot(rb, b.inertiaTimes(rb));
+  const auto some = Gt(k, Zero(d));
+  return IfThenElse(some, Set(d, 1.0f) / IfThenElse(some, k, Set(d, 1.0f)), Zero(d));
+}
+
+// The points' masses and normal velocities at the step's start (the reference's
+// prepareContacts); points past a manifold's count stay inert.
+template <class D>
+void prepareT(D d, const core::ContactRows& rows, const core::SolverBody* bodies) {
+  using V = LaneOf<D>;
+  using R = core::ContactRows;
+  forEachVector(d, rows, [&](std::size_t lane) {
+    const RowLanes r{rows.lanes(lane)};
+    const LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
+    const Vec3L<V> n = load3(d, r, R::nx), t1 = load3(d, r, R::t1x), t2 = load3(d, r, R::t2x);
+    const V count = Load(d, r[R::count]);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t p = R::kPoint + k * R::kPointFields;
+      const auto live = Lt(Set(d, float(k)), count);
+      const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
+      Store(IfThenElse(live, effectiveMass(d, a, b, rA, rB, n), Zero(d)), d, r[p + R::normalMass]);
+      Store(IfThenElse(live, effectiveMass(d, a, b, rA, rB, t1), Zero(d)), d,
+            r[p + R::tangentMass1]);
+      Store(IfThenElse(live, effectiveMass(d, a, b, rA, rB, t2), Zero(d)), d,
+            r[p + R::tangentMass2]);
+      Store(IfThenElse(live, relativeAlong(a, b, rA, rB, n), Zero(d)), d, r[p + R::relative]);
+      Store(Zero(d), d, r[p + R::maxNormal]);
+    }
+  });
+}
+
 template <class D>
 void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
   using V = LaneOf<D>;

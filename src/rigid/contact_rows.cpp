@@ -46,6 +46,7 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
       at(R::t2x + std::size_t(k), lane) = c.tangent[1][k];
     }
     at(R::friction, lane) = c.friction, at(R::restitution, lane) = c.restitution;
+    at(R::count, lane) = float(c.count);
     const Softness<float>& soft = c.isStatic ? p.staticSoft : p.soft;
     at(R::biasRate, lane) = soft.biasRate, at(R::massScale, lane) = soft.massScale;
     at(R::impulseScale, lane) = soft.impulseScale;
@@ -65,16 +66,14 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
         at(o + R::rBx + std::size_t(k), lane) = q.rB[k];
       }
       at(o + R::base, lane) = q.baseSeparation;
-      at(o + R::normalMass, lane) = q.normalMass;
-      at(o + R::tangentMass1, lane) = q.tangentMass[0];
-      at(o + R::tangentMass2, lane) = q.tangentMass[1];
       at(o + R::normalImpulse, lane) = q.normalImpulse;
       at(o + R::tangent1, lane) = q.tangentImpulse[0];
       at(o + R::tangent2, lane) = q.tangentImpulse[1];
-      at(o + R::maxNormal, lane) = q.maxNormalImpulse;
-      at(o + R::relative, lane) = q.relativeVelocity;
     }
   }
+  // The masses and normal velocities, lane-wide.
+  toRecords(bodies);
+  (plainLoops_ ? simd::prepareContactsAutovec : simd::prepareContacts)(r, records_.data());
 }
 
 core::ContactRows KernelPasses::rows() {

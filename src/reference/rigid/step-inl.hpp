@@ -194,8 +194,10 @@ void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> s
 // (src/rigid/contact_rows.hpp) take the same calls.
 template <class T>
 struct ReferencePasses {
-  void prepare(const std::vector<ContactConstraintT<T>>&, const std::vector<std::uint32_t>&,
-               const SolveParams<T>&, const std::vector<SolverBodyT<T>>&) {}
+  void prepare(std::vector<ContactConstraintT<T>>& c, const std::vector<std::uint32_t>&,
+               const SolveParams<T>&, const std::vector<SolverBodyT<T>>& b) {
+    prepareContacts(c, b);
+  }
   void warmStart(std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b) {
     detail::warmStart(c, b);
   }
@@ -241,7 +243,6 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
     solver[i].v = bodies[i].v, solver[i].w = bodies[i].w, solver[i].invMass = bodies[i].invMass;
     solver[i].invInertia = R * bodies[i].invInertia.asDiagonal() * R.transpose();
   }
-  prepareContacts(contacts, solver);
 
   const T h = dt / T(s.substeps);
   SolveParams<T> p{s.model, h, 1 / h, {}, {}, T(s.maxPushSpeed), T(s.baumgarte), T(s.linearSlop)};
