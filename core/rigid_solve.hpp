@@ -79,6 +79,17 @@ struct ContactRows {
   std::size_t batches;
 };
 
+// What moving a body's record over a substep needs beyond the record (simd/rigid.cpp's
+// integrateBodies): its orientation at the step's start (x, y, z, w), its inverse inertia about
+// its own axes, and whether it has mass (1; else it turns at its w). Streams of `count` floats, a
+// multiple of ContactRows::kBlockLanes, as many as the records (the padding still).
+struct BodyFrames {
+  const float* q[4];
+  const float* invInertia[3];
+  const float* dynamic;
+  std::size_t count;
+};
+
 // One pass's constants (SolveParams of the reference): the model's bias for penetrating points.
 struct ContactPass {
   enum Bias : std::uint32_t { kNone, kSoft, kBaumgarte };

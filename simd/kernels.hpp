@@ -353,5 +353,8 @@ extern const Kernel<void(const core::ContactRows&, core::SolverBody*, const core
     solveContacts, solveContactsAutovec;
 extern const Kernel<void(const core::ContactRows&, core::SolverBody*, float threshold)>
     restituteContacts, restituteContactsAutovec;
+// The bodies' records moved over a substep of h (the reference's integratePositions).
+extern const Kernel<void(core::SolverBody*, const core::BodyFrames&, float h)> integrateBodies,
+    integrateBodiesAutovec;
 
 }  // namespace simdphys::simd

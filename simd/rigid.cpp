@@ -1,6 +1,6 @@
-// The rigid bodies' contact passes (core/rigid_solve.hpp) as kernels: simd/rigid_contacts-inl.hpp
-// with Highway vectors, a contact per lane, and the same passes a contact at a time (the
-// plain-loop baseline, "Autovec").
+// The rigid bodies' contact passes and motion (core/rigid_solve.hpp) as kernels:
+// simd/rigid_contacts-inl.hpp and simd/rigid_motion-inl.hpp with Highway vectors, a contact or a
+// body per lane, and the same passes one at a time (the plain-loop baseline, "Autovec").
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "simd/rigid.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -18,7 +18,11 @@ SIMDPHYS_TARGET_BEGIN();
 
 #include "simd/particle_lanes-inl.hpp"
 
+#include "simd/rigid_records-inl.hpp"
+
 #include "simd/rigid_contacts-inl.hpp"
+
+#include "simd/rigid_motion-inl.hpp"
 
 void PrepareContacts(const core::ContactRows& rows, const core::SolverBody* bodies) {
   prepareT(hn::ScalableTag<float>(), rows, bodies);
@@ -48,6 +52,13 @@ void RestituteContactsAutovec(const core::ContactRows& rows, core::SolverBody* b
   restitutionT(ScalarLane(), rows, bodies, threshold);
 }
 
+void IntegrateBodies(core::SolverBody* bodies, const core::BodyFrames& frames, float h) {
+  integrateT(hn::ScalableTag<float>(), bodies, frames, h);
+}
+void IntegrateBodiesAutovec(core::SolverBody* bodies, const core::BodyFrames& frames, float h) {
+  integrateT(ScalarLane(), bodies, frames, h);
+}
+
 SIMDPHYS_TARGET_END();
 
 #if HWY_ONCE
@@ -60,5 +71,7 @@ SIMDPHYS_EXPORT(PrepareContactsAutovec, prepareContactsAutovec);
 SIMDPHYS_EXPORT(WarmStartContactsAutovec, warmStartContactsAutovec);
 SIMDPHYS_EXPORT(SolveContactsAutovec, solveContactsAutovec);
 SIMDPHYS_EXPORT(RestituteContactsAutovec, restituteContactsAutovec);
+SIMDPHYS_EXPORT(IntegrateBodies, integrateBodies);
+SIMDPHYS_EXPORT(IntegrateBodiesAutovec, integrateBodiesAutovec);
 }  // namespace simdphys::simd
 #endif

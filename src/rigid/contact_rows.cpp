@@ -11,8 +11,8 @@ using R = core::ContactRows;
 
 void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contacts,
                            const std::vector<std::uint32_t>& colourBegin,
-                           const SolveParams<float>& p,
-                           const std::vector<SolverBodyT<float>>& bodies) {
+                           const SolveParams<float>& p, const std::vector<BodyT<float>>& bodies,
+                           const std::vector<SolverBodyT<float>>& solver) {
   // Batches: each overflow contact alone (they may share bodies), then each colour.
   batchBegin_.assign(1, 0);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
@@ -52,7 +52,7 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
     at(R::impulseScale, lane) = soft.impulseScale;
     for (const auto& [body, mass, inertia] :
          {std::tuple(c.a, R::invMassA, R::inertiaA), std::tuple(c.b, R::invMassB, R::inertiaB)}) {
-      const SolverBodyT<float>& sb = bodies[body];
+      const SolverBodyT<float>& sb = solver[body];
       const Mat3f& I = sb.invInertia;
       at(mass, lane) = sb.invMass;
       const float upper[6] = {I(0, 0), I(0, 1), I(0, 2), I(1, 1), I(1, 2), I(2, 2)};
@@ -71,8 +71,18 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
       at(o + R::tangent2, lane) = q.tangentImpulse[1];
     }
   }
+  // The records, and what moving them needs of the bodies.
+  toRecords(solver);
+  const std::size_t count = records_.size();
+  frames_.assign(8 * count, 0.0f);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const BodyT<float>& body = bodies[i];
+    const float q[4] = {body.q.x(), body.q.y(), body.q.z(), body.q.w()};
+    for (std::size_t k = 0; k < 4; ++k) frames_[k * count + i] = q[k];
+    for (std::size_t k = 0; k < 3; ++k) frames_[(4 + k) * count + i] = body.invInertia[int(k)];
+    frames_[7 * count + i] = solver[i].invMass > 0 ? 1.0f : 0.0f;
+  }
   // The masses and normal velocities, lane-wide.
-  toRecords(bodies);
   (plainLoops_ ? simd::prepareContactsAutovec : simd::prepareContacts)(r, records_.data());
 }
 
@@ -85,49 +95,79 @@ core::ContactRows KernelPasses::rows() {
   return r;
 }
 
-void KernelPasses::toRecords(const std::vector<SolverBodyT<float>>& bodies) {
-  records_.resize(bodies.size());
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const SolverBodyT<float>& b = bodies[i];
+void KernelPasses::toRecords(const std::vector<SolverBodyT<float>>& solver) {
+  // Whole blocks: the padding records are still bodies (no velocity, no turn).
+  records_.assign(paddedSize(solver.size()), core::SolverBody{});
+  for (core::SolverBody& r : records_) r.dq[3] = 1.0f;
+  for (std::size_t i = 0; i < solver.size(); ++i) {
+    const SolverBodyT<float>& b = solver[i];
     core::SolverBody& r = records_[i];
     for (int k = 0; k < 3; ++k) r.v[k] = b.v[k], r.w[k] = b.w[k], r.dp[k] = b.dp[k];
     r.dq[0] = b.dq.x(), r.dq[1] = b.dq.y(), r.dq[2] = b.dq.z(), r.dq[3] = b.dq.w();
   }
 }
 
-void KernelPasses::fromRecords(std::vector<SolverBodyT<float>>& bodies) const {
+void KernelPasses::fromRecords(std::vector<SolverBodyT<float>>& solver) const {
+  for (std::size_t i = 0; i < solver.size(); ++i) {
+    const core::SolverBody& r = records_[i];
+    SolverBodyT<float>& b = solver[i];
+    for (int k = 0; k < 3; ++k) b.v[k] = r.v[k], b.w[k] = r.w[k], b.dp[k] = r.dp[k];
+    b.dq = Quatf(r.dq[3], r.dq[0], r.dq[1], r.dq[2]);
+  }
+}
+
+void KernelPasses::integrateVelocities(const std::vector<BodyT<float>>& bodies,
+                                       std::vector<SolverBodyT<float>>& solver,
+                                       const RigidSettings& s, float h) {
+  const Acceleration<float> a(s, h);
   for (std::size_t i = 0; i < bodies.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      bodies[i].v[k] = records_[i].v[k], bodies[i].w[k] = records_[i].w[k];
+    if (solver[i].invMass != 0)  // not kinematic or asleep
+      a.apply(bodies[i], solver[i].invInertia, Eigen::Map<Vec3f>(records_[i].v),
+              Eigen::Map<Vec3f>(records_[i].w));
 }
 
 void KernelPasses::warmStart(std::vector<ContactConstraintT<float>>&,
-                             std::vector<SolverBodyT<float>>& bodies) {
-  toRecords(bodies);
+                             std::vector<SolverBodyT<float>>&) {
   (plainLoops_ ? simd::warmStartContactsAutovec : simd::warmStartContacts)(rows(), records_.data());
-  fromRecords(bodies);
 }
 
-void KernelPasses::solve(std::vector<ContactConstraintT<float>>&,
-                         std::vector<SolverBodyT<float>>& bodies, const SolveParams<float>& p,
-                         bool useBias, bool reverse) {
+void KernelPasses::solve(std::vector<ContactConstraintT<float>>&, std::vector<SolverBodyT<float>>&,
+                         const SolveParams<float>& p, bool useBias, bool reverse) {
   core::ContactPass pass{core::ContactPass::kNone, p.invH, p.maxPush, p.baumgarte, p.slop, reverse};
   if (useBias && p.model == ContactModel::kSoftStep) pass.bias = core::ContactPass::kSoft;
   if (useBias && p.model == ContactModel::kBaumgarte) pass.bias = core::ContactPass::kBaumgarte;
-  toRecords(bodies);
   (plainLoops_ ? simd::solveContactsAutovec : simd::solveContacts)(rows(), records_.data(), pass);
-  fromRecords(bodies);
+}
+
+void KernelPasses::integratePositions(const std::vector<BodyT<float>>&,
+                                      std::vector<SolverBodyT<float>>&, float h) {
+  const std::size_t count = records_.size();
+  const float* f = frames_.data();
+  const core::BodyFrames frames{{f, f + count, f + 2 * count, f + 3 * count},
+                                {f + 4 * count, f + 5 * count, f + 6 * count},
+                                f + 7 * count,
+                                count};
+  (plainLoops_ ? simd::integrateBodiesAutovec : simd::integrateBodies)(records_.data(), frames, h);
+}
+
+// The book's projection on Eigen (it reads the contacts' points, not the rows): through the
+// solver bodies and back.
+void KernelPasses::project(const std::vector<ContactConstraintT<float>>& contacts,
+                           std::vector<SolverBodyT<float>>& solver, float fraction, float slop) {
+  fromRecords(solver);
+  projectPositions(contacts, solver, fraction, slop);
+  toRecords(solver);
 }
 
 void KernelPasses::restitution(std::vector<ContactConstraintT<float>>&,
-                               std::vector<SolverBodyT<float>>& bodies, float threshold) {
-  toRecords(bodies);
+                               std::vector<SolverBodyT<float>>&, float threshold) {
   (plainLoops_ ? simd::restituteContactsAutovec : simd::restituteContacts)(rows(), records_.data(),
                                                                            threshold);
-  fromRecords(bodies);
 }
 
-void KernelPasses::finish(std::vector<ContactConstraintT<float>>& contacts) {
+void KernelPasses::finish(std::vector<ContactConstraintT<float>>& contacts,
+                          std::vector<SolverBodyT<float>>& solver) {
+  fromRecords(solver);
   const core::ContactRows r = rows();
   for (std::size_t i = 0; i < contacts.size(); ++i)
     for (int j = 0; j < contacts[i].count; ++j) {

@@ -85,19 +85,31 @@ void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
   }
 }
 
-// Gravity, forces and damping.
+// Gravity, forces and damping over h, on a body's velocities v and w (its solver's, or a
+// kernel's record's).
+template <class T>
+struct Acceleration {
+  Vec3<T> g;
+  T h, linear, angular;
+  Acceleration(const RigidSettings& s, T h)
+      : g(s.gravity.template cast<T>()),
+        h(h),
+        linear(1 / (1 + h * T(s.linearDamping))),
+        angular(1 / (1 + h * T(s.angularDamping))) {}
+  template <class V3>
+  void apply(const BodyT<T>& b, const Mat3<T>& invInertia, V3&& v, V3&& w) const {
+    v = linear * (v + h * (g + b.invMass * b.force));
+    w = angular * (w + h * (invInertia * b.torque));
+  }
+};
+
 template <class T>
 void integrateVelocities(const std::vector<BodyT<T>>& bodies, std::vector<SolverBodyT<T>>& solver,
                          const RigidSettings& s, T h) {
-  const Vec3<T> g = s.gravity.template cast<T>();
-  const T linear = 1 / (1 + h * T(s.linearDamping)), angular = 1 / (1 + h * T(s.angularDamping));
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const BodyT<T>& b = bodies[i];
-    SolverBodyT<T>& sb = solver[i];
-    if (sb.invMass == 0) continue;  // kinematic or asleep
-    sb.v = linear * (sb.v + h * (g + b.invMass * b.force));
-    sb.w = angular * (sb.w + h * (sb.invInertia * b.torque));
-  }
+  const Acceleration<T> a(s, h);
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (solver[i].invMass != 0)  // not kinematic or asleep
+      a.apply(bodies[i], solver[i].invInertia, solver[i].v, solver[i].w);
 }
 
 // q turned by the rotation vector r (first order, normalised).
@@ -190,13 +202,18 @@ void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> s
       b.island = 0, b.sleepTime = 0;
 }
 
-// The contact passes on Eigen, one contact at a time: the reference. A kernel's passes
-// (src/rigid/contact_rows.hpp) take the same calls.
+// The contact passes and the bodies' motion on Eigen, one contact or body at a time: the
+// reference. A kernel's passes (src/rigid/contact_rows.hpp) take the same calls.
 template <class T>
 struct ReferencePasses {
   void prepare(std::vector<ContactConstraintT<T>>& c, const std::vector<std::uint32_t>&,
-               const SolveParams<T>&, const std::vector<SolverBodyT<T>>& b) {
+               const SolveParams<T>&, const std::vector<BodyT<T>>&,
+               const std::vector<SolverBodyT<T>>& b) {
     prepareContacts(c, b);
+  }
+  void integrateVelocities(const std::vector<BodyT<T>>& bodies, std::vector<SolverBodyT<T>>& b,
+                           const RigidSettings& s, T h) {
+    detail::integrateVelocities(bodies, b, s, h);
   }
   void warmStart(std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b) {
     detail::warmStart(c, b);
@@ -205,11 +222,19 @@ struct ReferencePasses {
              const SolveParams<T>& p, bool useBias, bool reverse) {
     solveContacts(c, b, p, useBias, reverse);
   }
+  void integratePositions(const std::vector<BodyT<T>>& bodies, std::vector<SolverBodyT<T>>& b,
+                          T h) {
+    detail::integratePositions(bodies, b, h);
+  }
+  void project(const std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b,
+               T fraction, T slop) {
+    projectPositions(c, b, fraction, slop);
+  }
   void restitution(std::vector<ContactConstraintT<T>>& c, std::vector<SolverBodyT<T>>& b,
                    T threshold) {
     applyRestitution(c, b, threshold);
   }
-  void finish(std::vector<ContactConstraintT<T>>&) {}
+  void finish(std::vector<ContactConstraintT<T>>&, std::vector<SolverBodyT<T>>&) {}
 };
 
 // One step of dt: bodies (their positions, orientations and velocities) move; `cache` holds
@@ -249,7 +274,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   const T hertz = std::min(T(s.contactHertz), T(0.25) / h);
   p.soft = Softness<T>(hertz, T(s.contactDampingRatio), h);
   p.staticSoft = Softness<T>(2 * hertz, T(s.contactDampingRatio), h);
-  passes.prepare(contacts, colourBegin, p, solver);
+  passes.prepare(contacts, colourBegin, p, bodies, solver);
   using Clock = std::chrono::steady_clock;
   const auto timed = [&](auto&& pass) {
     const auto start = Clock::now();
@@ -257,21 +282,21 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
     stats.passSeconds += std::chrono::duration<double>(Clock::now() - start).count();
   };
   for (int sub = 0; sub < s.substeps; ++sub) {
-    integrateVelocities(bodies, solver, s, h);
+    passes.integrateVelocities(bodies, solver, s, h);
     timed([&] { passes.warmStart(contacts, solver); });
     // The points of a manifold are solved in turn, forward in one pass and backward in the
     // next, so the order's bias (the first point takes the load and turns the body) cancels.
     for (int it = 0; it < s.iterations; ++it)
       timed([&] { passes.solve(contacts, solver, p, true, ((sub + it) & 1) != 0); });
-    integratePositions(bodies, solver, h);
+    passes.integratePositions(bodies, solver, h);
     if (s.model == ContactModel::kProjection)  // reads only the points' geometry
-      projectPositions(contacts, solver, T(s.projection), T(s.linearSlop));
+      passes.project(contacts, solver, T(s.projection), T(s.linearSlop));
     if (s.model == ContactModel::kSoftStep)
       for (int it = 0; it < s.iterations; ++it)
         timed([&] { passes.solve(contacts, solver, p, false, ((sub + it) & 1) == 0); });
   }
   timed([&] { passes.restitution(contacts, solver, T(s.restitutionThreshold)); });
-  passes.finish(contacts);
+  passes.finish(contacts, solver);
 
   for (std::size_t i = 0; i < n; ++i) {
     BodyT<T>& b = bodies[i];
