@@ -41,17 +41,6 @@ namespace detail {
 // appendix's arbiters), found by key (the pair's handle slots, which stay while bodies live)
 // and each point by its feature id. `sub` names one of a pair's several manifolds (a body against
 // a mesh has one per group of its triangles), else 0.
-// A pair of bodies' manifold as it was found, reused while the pair's relative pose stays near
-// the pose it was found at (Jolt's body pair cache): that pose (B's centre and orientation in A's
-// frame), the normal in A's frame, and each point's surface points in their own body's frame.
-template <class T>
-struct PairGeometryT {
-  T position[3], rotation[4];  // rotation: x, y, z, w
-  T normal[3];
-  T onA[4][3], onB[4][3];
-  bool valid = false;  // false for a body against an obstacle
-};
-
 template <class T>
 struct CachedManifoldT {
   std::uint64_t key;
@@ -59,7 +48,28 @@ struct CachedManifoldT {
   int count;
   std::uint32_t id[4];
   T impulse[4][3];  // normal, tangent 1, tangent 2
-  PairGeometryT<T> geometry;
+};
+
+// A pair of bodies' manifold as it was found, reused while the pair's relative pose stays near
+// the pose it was found at (Jolt's body pair cache): that pose (B's centre and orientation in A's
+// frame), the normal in A's frame, and each point's id and surface points in their own body's
+// frame.
+template <class T>
+struct PairGeometryT {
+  std::uint64_t key;
+  T position[3], rotation[4];  // rotation: x, y, z, w
+  T normal[3];
+  int count;
+  std::uint32_t id[4];
+  T onA[4][3], onB[4][3];
+};
+
+// What a step leaves the next: the manifolds' impulses by (key, sub), and the pairs of bodies'
+// manifolds by key.
+template <class T>
+struct ContactCacheT {
+  std::vector<CachedManifoldT<T>> manifolds;
+  std::vector<PairGeometryT<T>> pairs;
 };
 }  // namespace detail
 
@@ -191,7 +201,7 @@ class RigidBodies : public StreamSet<fields::Body> {
 
   RigidSettings settings_;
   HandleTable handles_;
-  std::vector<detail::CachedManifoldT<float>> cache_;
+  detail::ContactCacheT<float> cache_;
   float deepest_ = 0;
   std::size_t manifolds_ = 0, points_ = 0, colours_ = 0, overflow_ = 0;
   double passSeconds_ = 0;

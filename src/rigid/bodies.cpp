@@ -168,9 +168,11 @@ void RigidBodies::remove(Handle h) {
   wake(i);  // what it held up falls
   eraseSwap(handles_.remove(h, "RigidBodies::remove", "body"));
   // Its contacts leave the cache: a body added later may take its slot.
-  std::erase_if(cache_, [&](const detail::CachedManifoldT<float>& m) {
+  const auto involved = [&](const auto& m) {
     return std::uint32_t(m.key >> 32) == h.slot || std::uint32_t(m.key) == h.slot;
-  });
+  };
+  std::erase_if(cache_.manifolds, involved);
+  std::erase_if(cache_.pairs, involved);
 }
 
 void RigidBodies::setVec(Handle h, const char* where, std::size_t f, const char* name,

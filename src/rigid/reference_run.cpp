@@ -8,7 +8,7 @@ namespace simdphys::test {
 struct BodiesD::State {
   std::vector<detail::BodyT<double>> bodies;
   std::vector<std::uint32_t> slots;
-  std::vector<detail::CachedManifoldT<double>> cache, next;
+  detail::ContactCacheT<double> cache, next;
 };
 
 BodiesD::BodiesD(const RigidBodies& bodies)
@@ -26,7 +26,7 @@ void BodiesD::step(const World& world) {
     deepest_ = detail::stepState(state_->bodies, state_->slots, state_->cache, state_->next,
                                  world.obstacles(), world.bodies().settings(), dt)
                    .deepest;
-    state_->cache.swap(state_->next);
+    std::swap(state_->cache, state_->next);
   }
 }
 

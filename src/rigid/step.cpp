@@ -79,7 +79,7 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt, 
   const std::vector<std::uint32_t> slots = Internals::slots(bodies);
   // The next cache: a thread's buffer, swapped with the bodies' on success (so each keeps its
   // pages from step to step).
-  static thread_local std::vector<CachedManifoldT<float>> next;
+  static thread_local ContactCacheT<float> next;
   const auto& cache = bodies.cache_;
   // The contact passes on the active path: the reference on Eigen, or the kernels over rows
   // (or their plain loops), the rest of the step shared.
@@ -96,7 +96,7 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt, 
     requireFiniteField(state[i].w, body, "angular velocity after the step");
   }
   Internals::store(bodies, state);
-  bodies.cache_.swap(next);
+  std::swap(bodies.cache_, next);
   bodies.deepest_ = float(stats.deepest);
   bodies.manifolds_ = stats.manifolds;
   bodies.points_ = stats.points;

@@ -57,7 +57,6 @@ struct ContactConstraintT {
   std::uint32_t a, b;
   std::uint64_t key;  // the pair's, for warm starting
   std::uint32_t sub;  // which of the pair's manifolds (a mesh's: its lowest triangle id), else 0
-  std::uint32_t geometry = ~0u;  // its PairGeometryT's index in the step's, if a pair of bodies
   Vec3<T> normal, tangent[2];
   T friction, restitution;
   bool isStatic;  // against an obstacle (solved with stiffer softness, after the others)

@@ -214,13 +214,12 @@ inline constexpr std::size_t kParallelPairs = 256;
 // body's handle slot. maxSeparation of a pair: the speculative distance plus the distance the
 // two may close within dt. The pairs' manifolds are found on `threads` threads (0: OpenMP's
 // default), each into the pair's own slot, then taken in key order: the same at any count. A
-// pair whose manifold in `cache` (last step's, sorted by key) is still reusable takes it
-// (pair_cache-inl.hpp); each pair contact's geometry goes to `geometry`, for the next step's.
+// pair whose manifold in `cached` (last step's, by key) is still reusable takes it
+// (pair_cache-inl.hpp); the pairs' manifolds go to `nextPairs`, by key, for the next step.
 template <class T>
-void findContacts(std::vector<ContactConstraintT<T>>& contacts,
-                  std::vector<PairGeometryT<T>>& geometry, const std::vector<BodyT<T>>& bodies,
-                  std::span<const std::uint32_t> slots,
-                  const std::vector<CachedManifoldT<T>>& cache, const Obstacles& obstacles,
+void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vector<BodyT<T>>& bodies,
+                  std::span<const std::uint32_t> slots, const std::vector<PairGeometryT<T>>& cached,
+                  std::vector<PairGeometryT<T>>& nextPairs, const Obstacles& obstacles,
                   const RigidSettings& s, T dt, int threads, T& deepest) {
   const auto n = std::uint32_t(bodies.size());
   const std::uint32_t dummy = n;
@@ -255,11 +254,10 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts,
   std::sort(keyed.begin(), keyed.end(),
             [](const auto& l, const auto& r) { return l.first < r.first; });
   // Each pair's cached manifold, by a walk through both in key order.
-  std::vector<const CachedManifoldT<T>*> previous(keyed.size(), nullptr);
+  std::vector<const PairGeometryT<T>*> previous(keyed.size(), nullptr);
   for (std::size_t i = 0, j = 0; i < keyed.size(); ++i) {
-    while (j < cache.size() && cache[j].key < keyed[i].first) ++j;
-    if (j < cache.size() && cache[j].key == keyed[i].first && cache[j].sub == 0)
-      previous[i] = &cache[j];
+    while (j < cached.size() && cached[j].key < keyed[i].first) ++j;
+    if (j < cached.size() && cached[j].key == keyed[i].first) previous[i] = &cached[j];
   }
   deepest = 0;
   const auto record = [&](const ManifoldT<T>& m) {
@@ -271,21 +269,24 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts,
   static thread_local std::vector<ManifoldT<T>> found;
   std::vector<ManifoldT<T>>& manifolds = found;
   manifolds.resize(keyed.size());
+  static thread_local std::vector<PairGeometryT<T>> foundPairs;  // each pair's, as `manifolds`
+  std::vector<PairGeometryT<T>>& geometry = foundPairs;
   geometry.resize(keyed.size());
   const int t = keyed.size() < kParallelPairs ? 1 : threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(static) num_threads(t)
   for (std::size_t i = 0; i < keyed.size(); ++i) {
     const BodyT<T>&a = bodies[keyed[i].second.a], &b = bodies[keyed[i].second.b];
-    if (s.reuseManifolds && previous[i] && reusable(previous[i]->geometry, a, b)) {
+    if (s.reuseManifolds && previous[i] && reusable(*previous[i], a, b)) {
       manifolds[i] = reused(*previous[i], a, b);
-      geometry[i] = previous[i]->geometry;
+      geometry[i] = *previous[i];
       continue;
     }
     const T maxSeparation =
         T(s.speculativeDistance) + travel[keyed[i].second.a] + travel[keyed[i].second.b];
     manifolds[i] = collideBody(a, b, maxSeparation);
-    geometry[i] = manifolds[i].count > 0 ? pairGeometry(manifolds[i], a, b) : PairGeometryT<T>{};
+    if (manifolds[i].count > 0) geometry[i] = pairGeometry(keyed[i].first, manifolds[i], a, b);
   }
+  nextPairs.clear();
   for (std::size_t i = 0; i < keyed.size(); ++i) {
     const auto& [key, p] = keyed[i];
     const BodyT<T>&a = bodies[p.a], &b = bodies[p.b];
@@ -293,7 +294,7 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts,
     if (manifolds[i].count == 0) continue;
     addConstraint(contacts, manifolds[i], p.a, p.b, a.x, b.x, std::sqrt(a.friction * b.friction),
                   std::max(a.restitution, b.restitution), false, key);
-    contacts.back().geometry = std::uint32_t(i);
+    nextPairs.push_back(geometry[i]);
   }
   const std::span<const ObstacleShape> shapes = obstacles.shapes();
   for (std::uint32_t i = 0; i < n; ++i) {

@@ -32,10 +32,12 @@ RelativePose<T> relativePose(const BodyT<T>& a, const BodyT<T>& b) {
   return {toA * (b.x - a.x), toA * b.q};
 }
 
-// The manifold m of bodies a and b as found now, for reuse in later steps.
+// The manifold m of bodies a and b (the pair `key`) as found now, for reuse in later steps.
 template <class T>
-PairGeometryT<T> pairGeometry(const ManifoldT<T>& m, const BodyT<T>& a, const BodyT<T>& b) {
-  PairGeometryT<T> g;
+PairGeometryT<T> pairGeometry(std::uint64_t key, const ManifoldT<T>& m, const BodyT<T>& a,
+                              const BodyT<T>& b) {
+  PairGeometryT<T> g{};
+  g.key = key, g.count = m.count;
   const RelativePose<T> pose = relativePose(a, b);
   const Quat<T> toA = a.q.conjugate(), toB = b.q.conjugate();
   const Vec3<T> n = toA * m.normal;
@@ -47,15 +49,14 @@ PairGeometryT<T> pairGeometry(const ManifoldT<T>& m, const BodyT<T>& a, const Bo
     const Vec3<T> onA = toA * Vec3<T>(p.point - half - a.x),
                   onB = toB * Vec3<T>(p.point + half - b.x);
     for (int k = 0; k < 3; ++k) g.onA[i][k] = onA[k], g.onB[i][k] = onB[k];
+    g.id[i] = p.id;
   }
-  g.valid = true;
   return g;
 }
 
 // Whether the pair's pose is still near the one its cached manifold was found at.
 template <class T>
 bool reusable(const PairGeometryT<T>& g, const BodyT<T>& a, const BodyT<T>& b) {
-  if (!g.valid) return false;
   const RelativePose<T> pose = relativePose(a, b);
   const Vec3<T> moved = pose.position - Vec3<T>(g.position[0], g.position[1], g.position[2]);
   const Quat<T> was(g.rotation[3], g.rotation[0], g.rotation[1], g.rotation[2]);
@@ -65,22 +66,20 @@ bool reusable(const PairGeometryT<T>& g, const BodyT<T>& a, const BodyT<T>& b) {
          turn <= T(kReuseSinHalfAngle * kReuseSinHalfAngle);
 }
 
-// The cached manifold (its geometry g, points' ids and count from `cached`) carried to the bodies'
-// poses now: the surface points moved with their bodies, the normal with A, each separation
-// measured between the two points along it.
+// The cached manifold g carried to the bodies' poses now: the surface points moved with their
+// bodies, the normal with A, each separation measured between the two points along it.
 template <class T>
-ManifoldT<T> reused(const CachedManifoldT<T>& cached, const BodyT<T>& a, const BodyT<T>& b) {
-  const PairGeometryT<T>& g = cached.geometry;
+ManifoldT<T> reused(const PairGeometryT<T>& g, const BodyT<T>& a, const BodyT<T>& b) {
   ManifoldT<T> m;
   m.normal = a.q * Vec3<T>(g.normal[0], g.normal[1], g.normal[2]);
-  m.count = cached.count;
+  m.count = g.count;
   for (int i = 0; i < m.count; ++i) {
     const Vec3<T> onA = a.x + a.q * Vec3<T>(g.onA[i][0], g.onA[i][1], g.onA[i][2]);
     const Vec3<T> onB = b.x + b.q * Vec3<T>(g.onB[i][0], g.onB[i][1], g.onB[i][2]);
     ContactPointT<T>& p = m.points[std::size_t(i)];
     p.separation = (onB - onA).dot(m.normal);
     p.point = onA + p.separation / 2 * m.normal;
-    p.id = cached.id[i];
+    p.id = g.id[i];
   }
   return m;
 }

@@ -55,7 +55,6 @@ void warmStartFrom(const std::vector<CachedManifoldT<T>>& cache,
 
 template <class T>
 void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
-                  const std::vector<PairGeometryT<T>>& geometry,
                   std::vector<CachedManifoldT<T>>& cache) {
   // The keys sorted with each contact's index, then the entries written in that order: sorting
   // 16-byte keys rather than the 80-byte entries.
@@ -73,8 +72,7 @@ void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
   for (std::size_t k = 0; k < order.size(); ++k) {
     const ContactConstraintT<T>& c = contacts[order[k].index];
     CachedManifoldT<T>& m = cache[k];
-    m = {c.key, c.sub, c.count, {}, {}, {}};
-    if (c.geometry != ~0u) m.geometry = geometry[c.geometry];
+    m = {c.key, c.sub, c.count, {}, {}};
     for (int i = 0; i < c.count; ++i) {
       const ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
       m.id[i] = p.id;
@@ -238,20 +236,20 @@ struct ReferencePasses {
 };
 
 // One step of dt: bodies (their positions, orientations and velocities) move; `cache` holds
-// last step's manifolds (their impulses and geometry), `nextCache` receives this step's.
+// last step's manifolds (their impulses, and the pairs' geometry), `next` receives this step's.
 template <class T, class Passes = ReferencePasses<T>>
 RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> slots,
-                         const std::vector<CachedManifoldT<T>>& cache,
-                         std::vector<CachedManifoldT<T>>& nextCache, const Obstacles& obstacles,
-                         const RigidSettings& s, T dt, int threads = 1,
+                         const ContactCacheT<T>& cache, ContactCacheT<T>& next,
+                         const Obstacles& obstacles, const RigidSettings& s, T dt, int threads = 1,
                          Passes&& passes = Passes()) {
   RigidStepStats stats;
   T deepest = 0;
   // A thread's buffer, reused from step to step (rewritten whole: no state carries over).
   static thread_local std::vector<ContactConstraintT<T>> contacts;
-  static thread_local std::vector<PairGeometryT<T>> geometry;
-  findContacts(contacts, geometry, bodies, slots, cache, obstacles, s, dt, threads, deepest);
-  if (s.warmStarting) warmStartFrom(cache, contacts);  // in findContacts' order: near key order
+  findContacts(contacts, bodies, slots, cache.pairs, next.pairs, obstacles, s, dt, threads,
+               deepest);
+  // In findContacts' order: near key order.
+  if (s.warmStarting) warmStartFrom(cache.manifolds, contacts);
   const std::vector<std::uint32_t> colourBegin = colourContacts(contacts, bodies);
   stats.overflow = colourBegin[1];
   for (std::size_t k = 1; k + 1 < colourBegin.size(); ++k)
@@ -305,7 +303,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
     b.v = solver[i].v, b.w = solver[i].w;
   }
   if (s.sleeping) updateSleep(bodies, slots, contacts, s, dt);
-  keepImpulses(contacts, geometry, nextCache);
+  keepImpulses(contacts, next.manifolds);
   return stats;
 }
 
