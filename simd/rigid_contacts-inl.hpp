@@ -76,10 +76,15 @@ HWY_INLINE void applyImpulse(LaneBodies<D>& a, LaneBodies<D>& b, const Vec3L<V>&
 }
 
 template <class D, class V = LaneOf<D>>
+HWY_INLINE Vec3L<V> relativeVelocity(const LaneBodies<D>& a, const LaneBodies<D>& b,
+                                     const Vec3L<V>& rA, const Vec3L<V>& rB) {
+  return b.v + cross<D>(b.w, rB) - a.v - cross<D>(a.w, rA);
+}
+
+template <class D, class V = LaneOf<D>>
 HWY_INLINE V relativeAlong(const LaneBodies<D>& a, const LaneBodies<D>& b, const Vec3L<V>& rA,
                            const Vec3L<V>& rB, const Vec3L<V>& n) {
-  const Vec3L<V> dv = b.v + cross<D>(b.w, rB) - a.v - cross<D>(a.w, rA);
-  return dot(dv, n);
+  return dot(relativeVelocity(a, b, rA, rB), n);
 }
 
 // Each batch's vectors in turn; a batch's lanes share no moving body.
@@ -174,9 +179,10 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
       const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
       // The reference's cone clamp (solver-inl.hpp), in the same order of operations.
       const V limit = friction * Load(d, r[p + R::normalImpulse]);
+      const Vec3L<V> dv = relativeVelocity(a, b, rA, rB);
       V old[2], total[2];
       for (std::size_t i = 0; i < 2; ++i) {
-        const V vt = relativeAlong(a, b, rA, rB, t[i]);
+        const V vt = dot(dv, t[i]);
         old[i] = Load(d, r[p + R::tangent1 + i]);
         total[i] = old[i] - Load(d, r[p + R::tangentMass1 + i]) * vt;
       }
