@@ -10,15 +10,18 @@ namespace simdphys::detail {
 using R = core::ContactRows;
 
 void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contacts,
-                           const std::vector<std::uint32_t>& colourBegin,
-                           const SolveParams<float>& p, const std::vector<BodyT<float>>& bodies,
+                           const ColourOrder& colours, const SolveParams<float>& p,
+                           const std::vector<BodyT<float>>& bodies,
                            const std::vector<SolverBodyT<float>>& solver) {
-  // Batches: each overflow contact alone (they may share bodies), then each colour.
+  // Batches: each overflow contact alone (they may share bodies), then each colour; ranges of
+  // the solving order.
+  const std::vector<std::uint32_t>& begin = colours.begin;
+  order_ = colours.order;
   batchBegin_.assign(1, 0);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
-  for (std::uint32_t i = 0; i < colourBegin[1]; ++i) ranges.push_back({i, i + 1});
-  for (std::size_t k = 1; k + 1 < colourBegin.size(); ++k)
-    if (colourBegin[k + 1] > colourBegin[k]) ranges.push_back({colourBegin[k], colourBegin[k + 1]});
+  for (std::uint32_t i = 0; i < begin[1]; ++i) ranges.push_back({i, i + 1});
+  for (std::size_t k = 1; k + 1 < begin.size(); ++k)
+    if (begin[k + 1] > begin[k]) ranges.push_back({begin[k], begin[k + 1]});
   for (const auto& [first, last] : ranges)
     batchBegin_.push_back(batchBegin_.back() + std::uint32_t(paddedSize(last - first)));
   lanes_ = batchBegin_.back();
@@ -29,7 +32,8 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
   laneOf_.resize(contacts.size());
   std::size_t batch = 0;
   for (const auto& [first, last] : ranges) {
-    for (std::uint32_t i = first; i < last; ++i) laneOf_[i] = batchBegin_[batch] + (i - first);
+    for (std::uint32_t i = first; i < last; ++i)
+      laneOf_[order_[i]] = batchBegin_[batch] + (i - first);
     ++batch;
   }
   const core::ContactRows r = rows();
@@ -150,12 +154,12 @@ void KernelPasses::integratePositions(const std::vector<BodyT<float>>&,
   (plainLoops_ ? simd::integrateBodiesAutovec : simd::integrateBodies)(records_.data(), frames, h);
 }
 
-// The book's projection on Eigen (it reads the contacts' points, not the rows): through the
-// solver bodies and back.
+// The book's projection on Eigen (it reads the contacts' points, not the rows), in solving
+// order: through the solver bodies and back.
 void KernelPasses::project(const std::vector<ContactConstraintT<float>>& contacts,
                            std::vector<SolverBodyT<float>>& solver, float fraction, float slop) {
   fromRecords(solver);
-  projectPositions(contacts, solver, fraction, slop);
+  projectPositions(orderedCopy(contacts, order_), solver, fraction, slop);
   toRecords(solver);
 }
 

@@ -8,7 +8,6 @@
 
 #include "core/rigid_solve.hpp"
 #include "simdphys/core.hpp"
-#include "src/reference/rigid/solver-inl.hpp"
 #include "src/reference/rigid/step-inl.hpp"
 
 namespace simdphys::detail {
@@ -21,9 +20,8 @@ class KernelPasses {
   void reset(bool plainLoops, std::uint32_t dummy) { plainLoops_ = plainLoops, dummy_ = dummy; }
 
   // The rows and the records for a step; the records then hold the bodies' motion until finish.
-  void prepare(const std::vector<ContactConstraintT<float>>& contacts,
-               const std::vector<std::uint32_t>& colourBegin, const SolveParams<float>& p,
-               const std::vector<BodyT<float>>& bodies,
+  void prepare(const std::vector<ContactConstraintT<float>>& contacts, const ColourOrder& colours,
+               const SolveParams<float>& p, const std::vector<BodyT<float>>& bodies,
                const std::vector<SolverBodyT<float>>& solver);
   void integrateVelocities(const std::vector<BodyT<float>>& bodies,
                            std::vector<SolverBodyT<float>>& solver, const RigidSettings& s,
@@ -53,6 +51,7 @@ class KernelPasses {
   AlignedVector<std::uint32_t> a_, b_;  // each lane's bodies
   std::vector<std::uint32_t> batchBegin_;
   std::vector<std::uint32_t> laneOf_;  // each contact's lane
+  std::vector<std::uint32_t> order_;   // the contacts in solving order (project's)
   std::size_t lanes_ = 0;
   std::vector<core::SolverBody> records_;  // the solver bodies, padded to whole blocks
   AlignedVector<float> frames_;            // core::BodyFrames' 8 streams of records_.size()

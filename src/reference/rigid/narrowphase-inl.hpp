@@ -159,14 +159,19 @@ void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& 
 // body and are solved lane-wide at once, in any order, with the same result. Contacts between
 // moving bodies are coloured first; contacts with an obstacle or a kinematic body (one moving
 // body) take colours after theirs, so the solver meets them last (they stop push-through).
-// Contacts no colour takes go to the overflow, solved first, one at a time. Returns the
-// contacts in solving order and each colour's first contact (kColours + 2 offsets: the
-// overflow, then the colours).
+// Contacts no colour takes go to the overflow, solved first, one at a time. The solving order:
+// `order` (the contacts' indices, overflow first, then colour by colour, each in the contacts'
+// order) and `begin`, each colour's first place in it (kColours + 2 offsets: the overflow, then
+// the colours).
 inline constexpr int kColours = 24;
 
+struct ColourOrder {
+  std::vector<std::uint32_t> order, begin;
+};
+
 template <class T>
-std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& contacts,
-                                          const std::vector<BodyT<T>>& bodies) {
+ColourOrder colourContacts(const std::vector<ContactConstraintT<T>>& contacts,
+                           const std::vector<BodyT<T>>& bodies) {
   static_assert(kColours <= 32);
   const std::size_t n = bodies.size();
   // Each moving body's colours taken, a bit each; obstacles and kinematic bodies take none.
@@ -192,18 +197,31 @@ std::vector<std::uint32_t> colourContacts(std::vector<ContactConstraintT<T>>& co
       if (pass == 0) twoBodyColours = std::max(twoBodyColours, k + 1);
     }
   // Stable by colour, the overflow (-1) first.
-  std::vector<std::uint32_t> begin(kColours + 2, 0);
-  for (const int c : colour) ++begin[std::size_t(c + 2)];
-  for (std::size_t k = 1; k < begin.size(); ++k) begin[k] += begin[k - 1];
-  // Reused from step to step (a thread's buffer, rewritten whole each time): the contacts are
-  // hundreds of kilobytes, which fresh allocations would fault in page by page every step.
+  ColourOrder out{std::vector<std::uint32_t>(contacts.size()),
+                  std::vector<std::uint32_t>(kColours + 2, 0)};
+  for (const int c : colour) ++out.begin[std::size_t(c + 2)];
+  for (std::size_t k = 1; k < out.begin.size(); ++k) out.begin[k] += out.begin[k - 1];
+  std::vector<std::uint32_t> next(out.begin.begin(), out.begin.end() - 1);
+  for (std::uint32_t i = 0; i < contacts.size(); ++i)
+    out.order[next[std::size_t(colour[i] + 1)]++] = i;
+  return out;
+}
+
+// The contacts in solving order: a copy, a thread's buffer reused from step to step (rewritten
+// whole each time: the contacts are hundreds of kilobytes, which fresh allocations would fault
+// in page by page every step).
+template <class T>
+std::vector<ContactConstraintT<T>>& orderedCopy(const std::vector<ContactConstraintT<T>>& contacts,
+                                                const std::vector<std::uint32_t>& order) {
   static thread_local std::vector<ContactConstraintT<T>> ordered;
   ordered.resize(contacts.size());
-  std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
-  for (std::size_t i = 0; i < contacts.size(); ++i)
-    ordered[next[std::size_t(colour[i] + 1)]++] = contacts[i];
-  contacts.swap(ordered);
-  return begin;
+  for (std::size_t k = 0; k < contacts.size(); ++k) ordered[k] = contacts[order[k]];
+  return ordered;
+}
+
+template <class T>
+void putInOrder(std::vector<ContactConstraintT<T>>& contacts, const ColourOrder& colours) {
+  contacts.swap(orderedCopy(contacts, colours.order));
 }
 
 // Below this many body pairs the manifolds are found on one thread: starting threads costs more.

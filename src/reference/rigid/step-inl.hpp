@@ -204,9 +204,11 @@ void updateSleep(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> s
 // reference. A kernel's passes (src/rigid/contact_rows.hpp) take the same calls.
 template <class T>
 struct ReferencePasses {
-  void prepare(std::vector<ContactConstraintT<T>>& c, const std::vector<std::uint32_t>&,
+  // The contacts into solving order (the passes then take them as they lie).
+  void prepare(std::vector<ContactConstraintT<T>>& c, const ColourOrder& colours,
                const SolveParams<T>&, const std::vector<BodyT<T>>&,
                const std::vector<SolverBodyT<T>>& b) {
+    putInOrder(c, colours);
     prepareContacts(c, b);
   }
   void integrateVelocities(const std::vector<BodyT<T>>& bodies, std::vector<SolverBodyT<T>>& b,
@@ -250,10 +252,10 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
                deepest);
   // In findContacts' order: near key order.
   if (s.warmStarting) warmStartFrom(cache.manifolds, contacts);
-  const std::vector<std::uint32_t> colourBegin = colourContacts(contacts, bodies);
-  stats.overflow = colourBegin[1];
-  for (std::size_t k = 1; k + 1 < colourBegin.size(); ++k)
-    stats.colours += colourBegin[k + 1] > colourBegin[k] ? 1 : 0;
+  const ColourOrder colours = colourContacts(contacts, bodies);
+  stats.overflow = colours.begin[1];
+  for (std::size_t k = 1; k + 1 < colours.begin.size(); ++k)
+    stats.colours += colours.begin[k + 1] > colours.begin[k] ? 1 : 0;
   stats.deepest = double(deepest);
   stats.manifolds = contacts.size();
   for (const auto& c : contacts) stats.points += std::size_t(c.count);
@@ -272,7 +274,7 @@ RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uin
   const T hertz = std::min(T(s.contactHertz), T(0.25) / h);
   p.soft = Softness<T>(hertz, T(s.contactDampingRatio), h);
   p.staticSoft = Softness<T>(2 * hertz, T(s.contactDampingRatio), h);
-  passes.prepare(contacts, colourBegin, p, bodies, solver);
+  passes.prepare(contacts, colours, p, bodies, solver);
   using Clock = std::chrono::steady_clock;
   const auto timed = [&](auto&& pass) {
     const auto start = Clock::now();
