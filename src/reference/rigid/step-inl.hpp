@@ -65,9 +65,16 @@ void keepImpulses(const std::vector<ContactConstraintT<T>>& contacts,
   std::vector<Keyed> order(contacts.size());
   for (std::uint32_t k = 0; k < contacts.size(); ++k)
     order[k] = {contacts[k].key, contacts[k].sub, k};
-  std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
+  const auto before = [](const Keyed& l, const Keyed& r) {
     return std::pair(l.key, l.sub) < std::pair(r.key, r.sub);
-  });
+  };
+  // On the kernels the contacts lie as findContacts made them, two runs in key order (the pairs,
+  // then the obstacles' by body, in key order while bodies keep their first slots): a merge.
+  const auto run = std::is_sorted_until(order.begin(), order.end(), before);
+  if (std::is_sorted(run, order.end(), before))
+    std::inplace_merge(order.begin(), run, order.end(), before);
+  else
+    std::sort(order.begin(), order.end(), before);
   cache.resize(contacts.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
     const ContactConstraintT<T>& c = contacts[order[k].index];
