@@ -366,6 +366,23 @@ TEST(Rigid, BodiesAddedAndRemovedMidRunKeepTheirHandles) {
   expectError([&] { world.bodies().position(hs[1]); }, "stale");
 }
 
+// A kinematic body moves by its velocities alone: after 1 s at pi rad/s about y it has turned
+// half a revolution, and it has travelled its velocity's metre. The turn is integrated a substep
+// at a time to first order, normalised: each substep of phi = pi / 360 turns by 2 atan(phi / 2),
+// short by phi^3 / 12, 2e-5 rad over the 360 substeps; float rounding adds about as much. 1e-4.
+TEST(Rigid, KinematicBodyTurnsAndMovesByItsVelocities) {
+  World world = spaceWorld();
+  BodyDef d;
+  d.kinematic = true;
+  d.velocity = {1, 0, 0};
+  d.angularVelocity = {0, std::numbers::pi_v<float>, 0};
+  const Handle h = world.bodies().add(d);
+  run(world, 60);
+  const Quatf expected(Eigen::AngleAxisf(std::numbers::pi_v<float>, Vec3f::UnitY()));
+  EXPECT_LT(world.bodies().orientation(h).angularDistance(expected), 1e-4f);
+  EXPECT_NEAR(world.bodies().position(h).x(), 1.0f, 1e-5f);  // 60 sums of 1/60: float rounding
+}
+
 // A resting pair keeps its manifold from step to step (RigidSettings::reuseManifolds); a body
 // added in a removed body's handle slot, where that body was, must not inherit its contacts: a
 // sphere where a box rested touches the box below at one point, not at the box's four corners.

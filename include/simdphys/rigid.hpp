@@ -4,7 +4,8 @@
 //
 // A step of dt, as Box2D v3 and Box3D solve it (Catto, "Solver2D", 2024): contacts are found once
 // (broadphase over the bodies' bounds grown by the speculative distance, then the manifolds of
-// rigid/manifold.hpp, matched with last step's by feature to warm start their impulses), then
+// rigid/manifold.hpp, or last step's where a pair of bodies has barely moved: reuseManifolds;
+// matched with last step's by feature to warm start their impulses), then
 // each of `substeps` substeps of h integrates velocities (gravity, forces, damping, and the
 // gyroscopic term implicitly, so a free spinning box keeps its angular momentum), warm starts,
 // solves the contacts, integrates positions, and, for the soft step, relaxes; restitution is
