@@ -16,7 +16,8 @@ inline float exactEdge(float a, float b, float c, float d) {
 
 // The hit test once the three vertices are in the ray's sheared frame: px, py (x, y after the
 // shear) and pz (the depth along kz, relative to the origin), one triangle and one ray per lane;
-// sz and tMax per lane. Returns the lanes hit with t in [0, tMax], their t in `t`.
+// sz and tMax per lane. Returns the lanes hit with t in [0, tMax], their t in `t` (the other
+// lanes' t is any value).
 template <class D>
 HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const hn::Vec<D> (&py)[3],
                                          const hn::Vec<D> (&pz)[3], hn::Vec<D> sz, hn::Vec<D> tMax,
@@ -41,6 +42,13 @@ HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const h
   const auto anyNegative = hn::Or(hn::Lt(u, zero), hn::Or(hn::Lt(w1, zero), hn::Lt(w2, zero)));
   const auto anyPositive = hn::Or(hn::Gt(u, zero), hn::Or(hn::Gt(w1, zero), hn::Gt(w2, zero)));
   const auto det = hn::Add(hn::Add(u, w1), w2);
+  // A lane whose point is outside an edge, or whose triangle is degenerate, misses at any t:
+  // with none left, the depth and its division are skipped (Embree's early out).
+  const auto inside = hn::AndNot(hn::And(anyNegative, anyPositive), hn::Ne(det, zero));
+  if (hn::AllFalse(d, inside)) {
+    t = tMax;
+    return inside;
+  }
   const auto scaled =
       hn::Add(hn::Add(hn::Mul(u, hn::Mul(sz, pz[0])), hn::Mul(w1, hn::Mul(sz, pz[1]))),
               hn::Mul(w2, hn::Mul(sz, pz[2])));
@@ -54,8 +62,7 @@ HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const h
     t = hn::IfThenElse(overflow, bary, t);
   }
   t = hn::Add(t, zero);  // -0 becomes +0
-  const auto hit = hn::AndNot(hn::And(anyNegative, anyPositive), hn::Ne(det, zero));
-  return hn::And(hit, hn::And(hn::Ge(t, zero), hn::Le(t, tMax)));
+  return hn::And(inside, hn::And(hn::Ge(t, zero), hn::Le(t, tMax)));
 }
 
 // The lanes whose triangle the ray hits with t in [0, tMax]; their t in `t`. `r` is the ray's
