@@ -29,8 +29,9 @@ struct LaneBodies {
 
   // The lane's body A (or B) of the rows at `lane`.
   LaneBodies(D d, const core::SolverBody* bodies, const core::ContactRows& rows, std::size_t lane,
-             const RowLanes& r, bool isB)
+             bool isB)
       : index((isB ? rows.b : rows.a) + lane) {
+    const RowLanes r{rows.lanes(lane)};
     V f[kRecordFloats];
     loadRecords(d, bodies, index, f);
     v = {{f[0], f[1], f[2]}}, w = {{f[3], f[4], f[5]}}, dp = {{f[6], f[7], f[8]}};
@@ -115,7 +116,7 @@ void prepareT(D d, const core::ContactRows& rows, const core::SolverBody* bodies
   using R = core::ContactRows;
   forEachVector(d, rows, [&](std::size_t lane) {
     const RowLanes r{rows.lanes(lane)};
-    const LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
+    const LaneBodies<D> a(d, bodies, rows, lane, false), b(d, bodies, rows, lane, true);
     const Vec3L<V> n = load3(d, r, R::nx), t1 = load3(d, r, R::t1x), t2 = load3(d, r, R::t2x);
     const V count = Load(d, r[R::count]);
     for (std::size_t k = 0; k < 4; ++k) {
@@ -139,7 +140,7 @@ void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
   using R = core::ContactRows;
   forEachVector(d, rows, [&](std::size_t lane) {
     const RowLanes r{rows.lanes(lane)};
-    LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
+    LaneBodies<D> a(d, bodies, rows, lane, false), b(d, bodies, rows, lane, true);
     const Vec3L<V> n = load3(d, r, R::nx), t1 = load3(d, r, R::t1x), t2 = load3(d, r, R::t2x);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
@@ -163,7 +164,7 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
           slop = Set(d, pass.slop);
   forEachVector(d, rows, [&](std::size_t lane) {
     const RowLanes r{rows.lanes(lane)};
-    LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
+    LaneBodies<D> a(d, bodies, rows, lane, false), b(d, bodies, rows, lane, true);
     const Vec3L<V> n = load3(d, r, R::nx);
     V biasRate = zero, massScale = one, impulseScale = zero;
     if (pass.bias == core::ContactPass::kSoft) {
@@ -239,7 +240,7 @@ void restitutionT(D d, const core::ContactRows& rows, core::SolverBody* bodies, 
     const RowLanes r{rows.lanes(lane)};
     const V e = Load(d, r[R::restitution]);
     if (AllTrue(d, Eq(e, zero))) return;
-    LaneBodies<D> a(d, bodies, rows, lane, r, false), b(d, bodies, rows, lane, r, true);
+    LaneBodies<D> a(d, bodies, rows, lane, false), b(d, bodies, rows, lane, true);
     const Vec3L<V> n = load3(d, r, R::nx);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
