@@ -15,7 +15,7 @@ ensure_packages() {
 
 # What building and testing simdphys needs.
 SIMDPHYS_BUILD_PACKAGES=(g++ cmake ninja-build make pkg-config libeigen3-dev libhwy-dev libgtest-dev
-  libbenchmark-dev libomp-dev)
+  libbenchmark-dev libomp-dev nlohmann-json3-dev libcli11-dev)
 # What the examples need beyond that: stb_image_write for the renderer's PNG.
 SIMDPHYS_EXAMPLE_PACKAGES=(libstb-dev)
 

@@ -10,22 +10,13 @@
 #include "simdphys/geometry2d/primitives.hpp"
 #include "simdphys/geometry2d/streams.hpp"
 #include "simdphys/geometry3d.hpp"
+#include "simdphys/random.hpp"
 #include "simdphys/scene/frustum.hpp"
 
 namespace simdphys::workloads {
 
-// SplitMix64 and the float draws built on it.
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next();
-  float u01();                      // [0, 1), 24 bits
-  float uniform(float a, float b);  // a + (b - a) * u01(), rounded before the addition
-  Vec3f unitDirection();            // rejection-sampled in the unit ball, then normalised
-
- private:
-  std::uint64_t state_;
-};
+// SplitMix64 (simdphys/random.hpp): the workloads draw from it as WORKLOADS.md says.
+using simdphys::Random;
 
 // W1: N boxes and Q query boxes from seed 1.
 struct AabbWorkload {
