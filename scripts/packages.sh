@@ -13,11 +13,10 @@ ensure_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-# What building and testing simdphys needs.
+# What building and testing simdphys needs (nlohmann-json for scene files, CLI11 for the simdphys
+# command, stb_image_write for its and the examples' PNG pictures).
 SIMDPHYS_BUILD_PACKAGES=(g++ cmake ninja-build make pkg-config libeigen3-dev libhwy-dev libgtest-dev
-  libbenchmark-dev libomp-dev nlohmann-json3-dev libcli11-dev)
-# What the examples need beyond that: stb_image_write for the renderer's PNG.
-SIMDPHYS_EXAMPLE_PACKAGES=(libstb-dev)
+  libbenchmark-dev libomp-dev nlohmann-json3-dev libcli11-dev libstb-dev)
 
 jobs() { nproc 2>/dev/null || echo 2; }
 

@@ -1,5 +1,7 @@
 #include "cloth.hpp"
 
+#include "simdphys/measures.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -79,25 +81,11 @@ ClothStretch clothStretch(const ClothWorkload& w, std::span<const Vec3f> positio
   if (positions.size() != w.positions.size())
     throw Error("W3 stretch: " + std::to_string(positions.size()) + " positions for a cloth of " +
                 std::to_string(w.positions.size()) + " particles");
-  std::vector<double> stretch;
-  stretch.reserve(clothSpringCount(w.n, SpringKind::kStructural));
-  ClothStretch out{0, 0, 0, 0};
-  for (const ClothSpring& s : w.springs) {
-    if (s.kind != SpringKind::kStructural) continue;
-    double e = std::abs(length(positions[s.a], positions[s.b]) - s.rest) / s.rest;
-    if (!std::isfinite(e)) e = kInf;  // NaN too: it must still sort
-    stretch.push_back(e);
-    out.mean += e;
-    out.max = std::max(out.max, e);
-    if (w.invMass[s.a] != 0 && w.invMass[s.b] != 0)
-      out.maxAwayFromPins = std::max(out.maxAwayFromPins, e);
-  }
-  const std::size_t m = stretch.size();
-  out.mean /= double(m);
-  const auto rank = std::size_t(std::ceil(0.99 * double(m)));  // 1-based
-  std::nth_element(stretch.begin(), stretch.begin() + std::ptrdiff_t(rank - 1), stretch.end());
-  out.p99 = stretch[rank - 1];
-  return out;
+  std::vector<Spring> structural;
+  for (const ClothSpring& s : w.springs)
+    if (s.kind == SpringKind::kStructural) structural.push_back({s.a, s.b, s.rest});
+  const Stretch s = stretchOf(structural, positions, w.invMass);
+  return {s.mean, s.p99, s.max, s.maxAwayFromPins};
 }
 
 double spherePenetration(const Sphere& sphere, std::span<const Vec3f> positions) {

@@ -109,6 +109,9 @@ class Cloth {
 
   std::size_t size() const { return count_; }
   bool isGrid() const { return stride_ != 0; }
+  // A grid's particles along x and along z (ClothGrid's nx and nz); 0 for a network.
+  std::size_t gridColumns() const { return nx_; }
+  std::size_t gridRows() const { return nz_; }
   Vec3f position(std::uint32_t particle) const;
   Vec3f velocity(std::uint32_t particle) const;
   float invMass(std::uint32_t particle) const;

@@ -24,8 +24,16 @@ inline constexpr int kSceneFormatVersion = 1;
 // Larger files are refused before they are read.
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 256u << 20;
 
+// Where a picture of the scene is taken from (simdphys render), if the file says.
+struct SceneCamera {
+  bool given = false;
+  Vec3f eye{10, 6, 14}, target{0, 0, 0};
+  float fovDegrees = 45;  // vertical, in (0, 180)
+};
+
 struct SceneFile {
   std::string name, description;
+  SceneCamera camera;
   int frames = 60;            // world steps a run of the scene takes
   std::string path = "auto";  // the execution path it asks for ("auto": the best this CPU has)
   World world;

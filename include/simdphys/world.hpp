@@ -68,6 +68,11 @@ class World {
   ParticleSystem& particles(Handle system);
   const ParticleSystem& particles(Handle system) const;
   std::size_t particleSystemCount() const { return systems_.size(); }
+  // The system at index i < particleSystemCount() (systems in the order they were added, the last
+  // moved into a removed one's place).
+  Handle particleSystemHandle(std::size_t i) const {
+    return systemHandles_.handle(std::uint32_t(i));
+  }
 
   // Cloths, each with its own particles, springs and settings (cloth.hpp).
   Handle addCloth(Cloth cloth);
@@ -75,6 +80,7 @@ class World {
   Cloth& cloth(Handle cloth);
   const Cloth& cloth(Handle cloth) const;
   std::size_t clothCount() const { return cloths_.size(); }
+  Handle clothHandle(std::size_t i) const { return clothHandles_.handle(std::uint32_t(i)); }
 
   // The rigid bodies, with their own settings (rigid.hpp).
   RigidBodies& bodies() { return bodies_; }

@@ -314,8 +314,8 @@ SceneFile parseScene(std::string_view text, const std::string& name,
     throw Error(name + ": not valid JSON: " + (at == std::string::npos ? what : what.substr(at)));
   }
   const Node root(json, "", name);
-  root.keys(
-      {"simdphys", "name", "description", "settings", "obstacles", "particles", "cloths", "rigid"});
+  root.keys({"simdphys", "name", "description", "settings", "camera", "obstacles", "particles",
+             "cloths", "rigid"});
   const Node version = root.require("simdphys");
   if (version.integer(0, INT32_MAX) != kSceneFormatVersion)
     version.fail("format version " + version.json().dump() + " is not one this library reads (" +
@@ -329,6 +329,15 @@ SceneFile parseScene(std::string_view text, const std::string& name,
     settings = worldSettings(*s);
     if (auto f = s->find("frames")) scene.frames = int(f->integer(0, kMaxFrames));
     if (auto p = s->find("path")) scene.path = p->string();
+  }
+  if (auto c = root.find("camera")) {
+    c->keys({"eye", "target", "fov"});
+    scene.camera.given = true;
+    scene.camera.eye = c->require("eye").vec3();
+    scene.camera.target = c->require("target").vec3();
+    c->read("fov", scene.camera.fovDegrees, 1, 179);
+    if ((scene.camera.eye - scene.camera.target).norm() == 0)
+      c->require("target").fail("must differ from eye");
   }
   World world(settings);
   if (auto list = root.find("obstacles"))

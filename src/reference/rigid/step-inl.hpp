@@ -96,11 +96,11 @@ template <class T>
 struct Acceleration {
   Vec3<T> g;
   T h, linear, angular;
-  Acceleration(const RigidSettings& s, T h)
+  Acceleration(const RigidSettings& s, T step)
       : g(s.gravity.template cast<T>()),
-        h(h),
-        linear(1 / (1 + h * T(s.linearDamping))),
-        angular(1 / (1 + h * T(s.angularDamping))) {}
+        h(step),
+        linear(1 / (1 + step * T(s.linearDamping))),
+        angular(1 / (1 + step * T(s.angularDamping))) {}
   template <class V3>
   void apply(const BodyT<T>& b, const Mat3<T>& invInertia, V3&& v, V3&& w) const {
     v = linear * (v + h * (g + b.invMass * b.force));
