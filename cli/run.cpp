@@ -8,12 +8,13 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "session.hpp"
+#include "simdphys/snapshot.hpp"
 
 namespace simdphys::cli {
 namespace {
 
 struct RunOptions {
-  std::string scene, json;
+  std::string scene, json, save;
   Overrides overrides;
   bool progress = false, noProgress = false;
 };
@@ -96,6 +97,10 @@ void run(const RunOptions& o) {
   const WorldMeasures m = s.measures();
   std::printf("measures:\n");
   printMeasures(m);
+  if (!o.save.empty()) {
+    saveSnapshot(s.scene().world, o.save);
+    std::printf("saved the world after frame %d to %s\n", s.stepped(), o.save.c_str());
+  }
   if (!o.json.empty()) {
     std::ofstream out(o.json);
     out << toJson(s, m).dump(2) << "\n";
@@ -118,13 +123,18 @@ void addRun(CLI::App& app) {
   cmd->add_option("--threads", o->overrides.threads, "OpenMP threads, 0 for OpenMP's default")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--json", o->json, "Also write the results to this JSON file");
+  cmd->add_option("--save", o->save, "Save the world at the end to this snapshot file");
+  cmd->add_option("--restore", o->overrides.restore,
+                  "Start from this snapshot (of the scene's world) instead of the scene's start");
   cmd->add_flag("--progress", o->progress, "Draw the progress bar even when stderr is no terminal");
   cmd->add_flag("--no-progress", o->noProgress, "Never draw the progress bar");
   cmd->footer(
       "Examples:\n"
       "  simdphys run scenes/w5_pyramid_b10.json\n"
       "  simdphys run scenes/w3_cloth.json --frames 60 --path reference\n"
-      "  simdphys run scenes/playground.json --threads 2 --json result.json");
+      "  simdphys run scenes/playground.json --threads 2 --json result.json\n"
+      "  simdphys run scenes/w3_cloth.json --frames 100 --save cloth.snap\n"
+      "  simdphys run scenes/w3_cloth.json --frames 200 --restore cloth.snap");
   cmd->callback([o] { run(*o); });
 }
 

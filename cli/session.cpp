@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "simdphys/snapshot.hpp"
+
 namespace simdphys::cli {
 
 void StageTotals::add(const StepProfile& p) {
@@ -21,6 +23,7 @@ void StageTotals::add(const StepProfile& p) {
 namespace {
 SceneFile loadWith(const std::string& file, const Overrides& o) {
   SceneFile scene = loadScene(file);
+  if (!o.restore.empty()) scene.world = loadSnapshot(o.restore);
   const std::string path = o.path.empty() ? scene.path : o.path;
   if (path != "auto") setPath(path);
   if (o.threads >= 0) {

@@ -12,9 +12,10 @@
 namespace simdphys::cli {
 
 struct Overrides {
-  int frames = -1;   // < 0: the scene's
-  std::string path;  // empty: the scene's
-  int threads = -1;  // < 0: the scene's
+  int frames = -1;      // < 0: the scene's
+  std::string path;     // empty: the scene's
+  int threads = -1;     // < 0: the scene's
+  std::string restore;  // a snapshot (snapshot.hpp) to start from instead of the scene's world
 };
 
 // The stages' times summed over a run (World::profile() of each step).

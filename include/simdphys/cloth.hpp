@@ -142,6 +142,7 @@ class Cloth {
   void refit();
 
   friend struct Internals;
+  friend struct detail::Snapshot;
   ClothSettings settings_;
   std::size_t count_ = 0;
   // Slot of particle (i, j) in a grid: j * stride_ + i (stride_ a multiple of kStreamPad, 0 for a

@@ -15,6 +15,10 @@
 
 namespace simdphys {
 
+namespace detail {
+struct Snapshot;  // src/world/snapshot.cpp: saves and restores a World's members (snapshot.hpp)
+}
+
 // Every rejected input throws this, with a message saying what was wrong and where
 // (function, element index, field).
 class Error : public std::invalid_argument {

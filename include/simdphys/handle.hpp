@@ -46,6 +46,7 @@ class HandleTable {
   void clear() { *this = HandleTable(); }
 
  private:
+  friend struct detail::Snapshot;
   struct Slot {
     std::uint32_t index, generation;
   };

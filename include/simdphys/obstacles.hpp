@@ -66,6 +66,7 @@ class Obstacles {
 
  private:
   std::vector<ObstacleShape> shapes_;
+  friend struct detail::Snapshot;
   HandleTable handles_;
   std::vector<std::uint32_t> bounded_, planes_;
   std::vector<Aabb> boxes_;

@@ -108,6 +108,7 @@ class ParticleSystem : public StreamSet<fields::Particle> {
 
  private:
   friend struct detail::ParticleStreams;
+  friend struct detail::Snapshot;
   std::uint32_t require(Handle particle, const char* where) const;
   void storeVec(std::size_t field, std::size_t i, const Vec3f& v);
   Vec3f loadVec(std::size_t field, std::size_t i) const;

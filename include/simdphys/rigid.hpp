@@ -191,6 +191,7 @@ class RigidBodies : public StreamSet<fields::Body> {
 
  private:
   friend struct Internals;
+  friend struct detail::Snapshot;
   std::uint32_t require(Handle body, const char* where) const;
   Vec3f loadVec(std::size_t field, std::size_t i) const;
   void storeVec(std::size_t field, std::size_t i, const Vec3f& v);

@@ -92,6 +92,7 @@ class World {
 
  private:
   WorldSettings settings_;
+  friend struct detail::Snapshot;
   Obstacles obstacles_;
   std::vector<ParticleSystem> systems_;
   HandleTable systemHandles_;

@@ -102,6 +102,7 @@ class StreamSet {
   }
 
  private:
+  friend struct detail::Snapshot;
   std::array<Stream<float>, kFields> fields_;
 };
 
