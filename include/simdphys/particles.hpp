@@ -103,6 +103,15 @@ class ParticleSystem : public StreamSet<fields::Particle> {
   std::span<const float> vz() const { return field(fields::Particle::vz).view(); }
   std::span<const float> invMass() const { return field(fields::Particle::invMass).view(); }
 
+  // Positions and velocities (fields x .. vz) to write in place, as numpy views do
+  // (docs/python.md): the next step no longer assumes that every particle is outside the
+  // obstacles. Check what was written with checkFields() before stepping. Throws Error for other
+  // fields (inverse mass and forces go through their setters).
+  std::span<float> writableField(std::size_t f);
+  // Throws Error naming `where`, the particle and the field if a position or velocity is not
+  // finite or out of range (math.hpp); changes nothing.
+  void checkFields(const std::string& where) const;
+
   // True once a non-zero force was set: the step reads the force fields only then.
   bool hasForces() const { return hasForces_; }
 

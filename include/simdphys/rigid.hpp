@@ -174,6 +174,15 @@ class RigidBodies : public StreamSet<fields::Body> {
   // The streams (fields::Body), size() live elements each, read in place (no copy).
   std::span<const float> stream(std::size_t f) const { return field(f).view(); }
 
+  // Positions, orientations and velocities (fields x .. wz) to write in place, as numpy views do
+  // (docs/python.md): every body is woken, so a moved body is stepped. Check what was written with
+  // checkFields() before stepping. Throws Error for other fields.
+  std::span<float> writableField(std::size_t f);
+  // Throws Error naming `where`, the body and the field if a position, orientation or velocity is
+  // not finite or out of range, or an orientation is not a unit quaternion (within 1e-3; add()'s
+  // rule); changes nothing.
+  void checkFields(const std::string& where) const;
+
   // What the last step's contacts measured: the deepest penetration of any contact point when
   // the contacts were found (m, >= 0), and the manifolds and points made.
   float deepestPenetration() const { return deepest_; }

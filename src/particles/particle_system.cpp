@@ -89,6 +89,25 @@ void ParticleSystem::remove(Handle h) {
   eraseSwap(handles_.remove(h, "ParticleSystem::remove", "particle"));
 }
 
+std::span<float> ParticleSystem::writableField(std::size_t f) {
+  if (f > F::Particle::vz)
+    throw Error("ParticleSystem::writableField: field " + std::to_string(f) +
+                " is not a position or velocity");
+  outsideOf_ = 0;  // a written position may lie inside an obstacle
+  return writable(f);
+}
+
+void ParticleSystem::checkFields(const std::string& where) const {
+  static constexpr const char* kNames[] = {"x", "y", "z", "vx", "vy", "vz"};
+  for (std::size_t f = F::Particle::x; f <= F::Particle::vz; ++f) {
+    const std::span<const float> v = field(f).view();
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!(std::abs(v[i]) <= kMaxCoordinate))
+        throw Error(where + ": particle " + std::to_string(i) + ": " + kNames[f] + " is " +
+                    std::to_string(v[i]) + ", not finite or beyond +-1e18");
+  }
+}
+
 Vec3f ParticleSystem::position(Handle h) const {
   return loadVec(F::Particle::x, require(h, "ParticleSystem::position"));
 }

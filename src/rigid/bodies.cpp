@@ -183,6 +183,30 @@ void RigidBodies::setVec(Handle h, const char* where, std::size_t f, const char*
   storeVec(f, i, value);
 }
 
+std::span<float> RigidBodies::writableField(std::size_t f) {
+  if (f > F::Body::wz)
+    throw Error("RigidBodies::writableField: field " + std::to_string(f) +
+                " is not a position, orientation or velocity");
+  for (std::uint32_t i = 0; i < size(); ++i) wake(i);
+  return writable(f);
+}
+
+void RigidBodies::checkFields(const std::string& where) const {
+  static constexpr const char* kNames[] = {"x",  "y",  "z",  "qx", "qy", "qz", "qw",
+                                           "vx", "vy", "vz", "wx", "wy", "wz"};
+  for (std::size_t f = F::Body::x; f <= F::Body::wz; ++f) {
+    const std::span<const float> v = field(f).view();
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!(std::abs(v[i]) <= kMaxCoordinate))
+        throw Error(where + ": body " + std::to_string(i) + ": " + kNames[f] + " is " +
+                    std::to_string(v[i]) + ", not finite or beyond +-1e18");
+  }
+  for (std::uint32_t i = 0; i < size(); ++i)
+    requireOrientation(Quatf(value(F::Body::qw, i), value(F::Body::qx, i), value(F::Body::qy, i),
+                             value(F::Body::qz, i)),
+                       where + ": body " + std::to_string(i));
+}
+
 void RigidBodies::wake(std::uint32_t i) {
   const float island = value(F::Body::island, i);
   if (island == 0) return;

@@ -89,6 +89,41 @@ namespace detail {
 // Every member that a step reads or writes, in one order for both directions. A Reader rebuilds
 // what is derived (an obstacle mesh's tree, the obstacles' tree) instead of reading it.
 struct Snapshot {
+  // Structs with padding are saved member by member: their padding bytes are whatever a copy left
+  // there, and two worlds in the same state must give the same bytes. The sizes make a new member
+  // a compile error here until it is saved.
+  template <class Ar>
+  static void io(Ar& a, ParticleSettings& s) {
+    static_assert(sizeof(ParticleSettings) == 44, "a member was added: save it here");
+    a.pod(s.integrator), a.pod(s.gravity), a.pod(s.damping), a.pod(s.drag), a.pod(s.restitution);
+    a.pod(s.friction), a.pod(s.restitutionThreshold), a.pod(s.skin), a.pod(s.maxBounces);
+  }
+  template <class Ar>
+  static void io(Ar& a, ClothSettings& s) {
+    static_assert(sizeof(ClothSettings) == 40, "a member was added: save it here");
+    a.pod(s.model), a.pod(s.gravity), a.pod(s.substeps), a.pod(s.damping), a.pod(s.margin);
+    a.pod(s.friction), a.pod(s.tethers), a.pod(s.penalty);
+  }
+  template <class Ar>
+  static void io(Ar& a, RigidSettings& s) {
+    static_assert(sizeof(RigidSettings) == 76, "a member was added: save it here");
+    a.pod(s.model), a.pod(s.gravity), a.pod(s.substeps), a.pod(s.iterations);
+    a.pod(s.contactHertz), a.pod(s.contactDampingRatio), a.pod(s.maxPushSpeed);
+    a.pod(s.baumgarte), a.pod(s.projection), a.pod(s.linearSlop), a.pod(s.speculativeDistance);
+    a.pod(s.restitutionThreshold), a.pod(s.linearDamping), a.pod(s.angularDamping);
+    a.pod(s.warmStarting), a.pod(s.reuseManifolds), a.pod(s.sleeping), a.pod(s.sleepSpeed);
+    a.pod(s.timeToSleep);
+  }
+  template <class Ar>
+  static void io(Ar& a, std::vector<PairGeometryT<float>>& pairs) {
+    static_assert(sizeof(PairGeometryT<float>) == 168, "a member was added: save it here");
+    pairs.resize(a.count(pairs.size()));
+    for (PairGeometryT<float>& p : pairs) {
+      a.pod(p.key), a.pod(p.position), a.pod(p.rotation), a.pod(p.normal), a.pod(p.count);
+      a.pod(p.id), a.pod(p.onA), a.pod(p.onB);
+    }
+  }
+
   template <class Ar>
   static void io(Ar& a, HandleTable& t) {
     a.list(t.slots_);
@@ -165,7 +200,7 @@ struct Snapshot {
   template <class Ar>
   static void io(Ar& a, ParticleSystem& p) {
     io(a, static_cast<StreamSet<fields::Particle>&>(p));
-    a.pod(p.settings_);
+    io(a, p.settings_);
     io(a, p.handles_);
     a.pod(p.hasForces_);
     a.pod(p.outsideOf_);
@@ -177,7 +212,7 @@ struct Snapshot {
 
   template <class Ar>
   static void io(Ar& a, Cloth& c) {
-    a.pod(c.settings_);
+    io(a, c.settings_);
     a.pod(c.count_), a.pod(c.stride_), a.pod(c.nx_), a.pod(c.nz_), a.pod(c.slots_);
     for (auto& s : c.s_) a.list(s);
     a.list(c.springs_), a.list(c.batchOf_), a.list(c.batchBegin_);
@@ -203,10 +238,10 @@ struct Snapshot {
   template <class Ar>
   static void io(Ar& a, RigidBodies& b) {
     io(a, static_cast<StreamSet<fields::Body>&>(b));
-    a.pod(b.settings_);
+    io(a, b.settings_);
     io(a, b.handles_);
     a.list(b.cache_.manifolds);
-    a.list(b.cache_.pairs);
+    io(a, b.cache_.pairs);
     // The last step's counts (not its wall time, which is no state).
     a.pod(b.deepest_), a.pod(b.manifolds_), a.pod(b.points_), a.pod(b.colours_), a.pod(b.overflow_);
     if constexpr (Ar::kReading) {
@@ -217,6 +252,7 @@ struct Snapshot {
 
   template <class Ar>
   static void io(Ar& a, World& w) {
+    static_assert(sizeof(WorldSettings) == 12, "a member was added: save it here");
     a.pod(w.settings_);
     if constexpr (Ar::kReading) validate(w.settings_, "restore: the world");
     io(a, w.obstacles_);
