@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   simdphys::cli::addRun(app);
   simdphys::cli::addBench(app);
   simdphys::cli::addRender(app);
+  simdphys::cli::addBatch(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -15,10 +15,10 @@ ensure_packages() {
 
 # What building and testing simdphys needs (nlohmann-json for scene files, CLI11 for the simdphys
 # command, stb_image_write for its and the examples' PNG pictures, pybind11, numpy and pytest for
-# the Python module).
+# the Python module, Open MPI for the batch runner across processes).
 SIMDPHYS_BUILD_PACKAGES=(g++ cmake ninja-build make pkg-config libeigen3-dev libhwy-dev libgtest-dev
   libbenchmark-dev libomp-dev nlohmann-json3-dev libcli11-dev libstb-dev pybind11-dev python3-dev
-  python3-numpy python3-pytest)
+  python3-numpy python3-pytest openmpi-bin libopenmpi-dev)
 
 jobs() { nproc 2>/dev/null || echo 2; }
 

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,10 +42,18 @@ struct SceneFile {
   std::vector<Handle> obstacles, particleSystems, cloths, bodies;
 };
 
-// Reads the scene in `file`; OBJ meshes are found relative to the file's folder.
-SceneFile loadScene(const std::filesystem::path& file);
+// A change to a scene's JSON before it is read, as a parameter sweep varies a scene: the value at
+// `pointer` (RFC 6901, e.g. "/rigid/settings/substeps") replaced by, or, in an existing object,
+// added as, the JSON text `json` (e.g. "4").
+struct ScenePatch {
+  std::string pointer, json;
+};
+
+// Reads the scene in `file`, patched; OBJ meshes are found relative to the file's folder.
+SceneFile loadScene(const std::filesystem::path& file, std::span<const ScenePatch> patches = {});
 // The same from JSON text: `name` stands for the file in errors, meshes are found in `folder`.
 SceneFile parseScene(std::string_view text, const std::string& name,
-                     const std::filesystem::path& folder = {});
+                     const std::filesystem::path& folder = {},
+                     std::span<const ScenePatch> patches = {});
 
 }  // namespace simdphys

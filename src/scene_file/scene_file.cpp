@@ -299,20 +299,53 @@ void rigid(const Node& n, World& world, SceneFile& scene) {
 }  // namespace
 }  // namespace scenefile
 
-SceneFile parseScene(std::string_view text, const std::string& name,
-                     const std::filesystem::path& folder) {
-  using namespace scenefile;
+namespace scenefile {
+namespace {
+
+Json parseJson(std::string_view text, const std::string& name) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
     throw Error(name + ": the file is empty (a scene file is a JSON object)");
-  Json json;
   try {
-    json = Json::parse(text);
+    return Json::parse(text);
   } catch (const Json::parse_error& e) {
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 12: ..."
     const std::string what = e.what();
     const auto at = what.find("parse error");
     throw Error(name + ": not valid JSON: " + (at == std::string::npos ? what : what.substr(at)));
   }
+}
+
+// The patches applied in order: each value replaces (or adds, in an existing object) the one at
+// its pointer.
+void patch(Json& json, std::span<const ScenePatch> patches, const std::string& name) {
+  for (const ScenePatch& p : patches) {
+    const std::string where = name + ": patch " + p.pointer;
+    try {
+      const Json::json_pointer pointer(p.pointer);
+      if (!pointer.empty() && !json.contains(pointer.parent_pointer()))
+        throw Error(where + ": no such place in the scene");
+      json[pointer] = parseJson(p.json, where);
+    } catch (const Json::exception& e) {
+      throw Error(where + ": " + e.what());
+    }
+  }
+}
+
+SceneFile build(const Json& json, const std::string& name, const std::filesystem::path& folder);
+
+}  // namespace
+}  // namespace scenefile
+
+SceneFile parseScene(std::string_view text, const std::string& name,
+                     const std::filesystem::path& folder, std::span<const ScenePatch> patches) {
+  scenefile::Json json = scenefile::parseJson(text, name);
+  scenefile::patch(json, patches, name);
+  return scenefile::build(json, name, folder);
+}
+
+namespace scenefile {
+namespace {
+SceneFile build(const Json& json, const std::string& name, const std::filesystem::path& folder) {
   const Node root(json, "", name);
   root.keys({"simdphys", "name", "description", "settings", "camera", "obstacles", "particles",
              "cloths", "rigid"});
@@ -354,8 +387,10 @@ SceneFile parseScene(std::string_view text, const std::string& name,
   scene.world = std::move(world);
   return scene;
 }
+}  // namespace
+}  // namespace scenefile
 
-SceneFile loadScene(const std::filesystem::path& file) {
+SceneFile loadScene(const std::filesystem::path& file, std::span<const ScenePatch> patches) {
   const std::string name = file.string();
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec))
@@ -368,7 +403,7 @@ SceneFile loadScene(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
   if (!(in && text << in.rdbuf()) && bytes > 0) throw Error(name + ": cannot be read");
-  return parseScene(text.str(), name, file.parent_path());
+  return parseScene(text.str(), name, file.parent_path(), patches);
 }
 
 }  // namespace simdphys

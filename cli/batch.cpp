@@ -1,0 +1,63 @@
+// simdphys batch FILE: the jobs of a batch file (docs/batch.md) on this machine's cores, a job a
+// thread; a table of the results and, with --json, the report.
+#include <cstdio>
+#include <fstream>
+
+#include "commands.hpp"
+#include "simdphys/batch.hpp"
+
+namespace simdphys::cli {
+namespace {
+
+struct BatchOptions {
+  std::string file, json;
+  int threads = 0;
+};
+
+}  // namespace
+
+void printBatch(std::span<const BatchResult> results) {
+  std::printf("%5s %7s %10s %18s  %s\n", "job", "frames", "seconds", "state hash", "measures");
+  for (const BatchResult& r : results) {
+    if (r.failed) {
+      std::printf("%5llu  failed: %s\n", static_cast<unsigned long long>(r.job), r.error);
+      continue;
+    }
+    std::printf(
+        "%5llu %7d %10.3f   %016llx  bodies %llu: displacement %.3g m, penetration %.3g m; "
+        "cloth stretch %.3g%%; particles inside %llu\n",
+        static_cast<unsigned long long>(r.job), r.frames, r.seconds,
+        static_cast<unsigned long long>(r.stateHash), static_cast<unsigned long long>(r.bodies),
+        r.maxDisplacement, r.deepestBodyPenetration, 100 * r.clothMeanStretch,
+        static_cast<unsigned long long>(r.particlesInside));
+  }
+}
+
+void writeReport(std::span<const BatchResult> results, const std::string& file) {
+  std::ofstream out(file);
+  out << batchReport(results) << "\n";
+  if (!out) throw Error(file + ": cannot be written");
+}
+
+void addBatch(CLI::App& app) {
+  auto o = std::make_shared<BatchOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "batch", "Run a batch file's jobs (scenes, sweeps) on this machine's cores");
+  cmd->add_option("file", o->file, "The batch file (JSON, docs/batch.md)")->required();
+  cmd->add_option("--threads", o->threads, "Jobs at a time, 0 for OpenMP's default")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--json", o->json, "Also write the results to this JSON file");
+  cmd->footer(
+      "Examples:\n"
+      "  simdphys batch scenes/sweep.json --threads 2 --json results.json\n"
+      "  mpirun -n 4 simdphys-batch-mpi scenes/sweep.json --json results.json   (across "
+      "processes)");
+  cmd->callback([o] {
+    const std::vector<BatchJob> jobs = loadBatch(o->file);
+    const std::vector<BatchResult> results = runBatch(jobs, o->threads);
+    printBatch(results);
+    if (!o->json.empty()) writeReport(results, o->json);
+  });
+}
+
+}  // namespace simdphys::cli
