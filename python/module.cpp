@@ -10,6 +10,7 @@
 
 #include <memory>
 
+#include "simdphys/batch.hpp"
 #include "simdphys/bvh.hpp"
 #include "simdphys/measures.hpp"
 #include "simdphys/mesh_bvh.hpp"
@@ -256,6 +257,37 @@ void bindScene(py::module_& m) {
       "Loads a scene file (docs/scenes.md): a dict of world, name, description, frames, path");
 }
 
+void bindBatch(py::module_& m) {
+  m.def(
+      "run_batch",
+      [](const std::filesystem::path& file, int threads) {
+        const std::vector<BatchJob> jobs = loadBatch(file);
+        std::vector<BatchResult> results;
+        {
+          py::gil_scoped_release release;
+          results = runBatch(jobs, threads);
+        }
+        py::list out;
+        for (const BatchResult& r : results) {
+          py::dict d;
+          d["job"] = r.job, d["frames"] = r.frames, d["seconds"] = r.seconds;
+          d["state_hash"] = r.stateHash, d["failed"] = bool(r.failed),
+          d["error"] = std::string(r.error);
+          d["bodies"] = r.bodies, d["max_displacement"] = r.maxDisplacement;
+          d["deepest_body_penetration"] = r.deepestBodyPenetration,
+          d["standing"] = bool(r.standing);
+          d["cloth_mean_stretch"] = r.clothMeanStretch;
+          d["cloth_deepest_penetration"] = r.clothDeepestPenetration;
+          d["particles"] = r.particles, d["particles_inside"] = r.particlesInside;
+          d["finite"] = bool(r.finite);
+          out.append(d);
+        }
+        return out;
+      },
+      py::arg("file"), py::arg("threads") = 0,
+      "Runs a batch file's jobs a job a thread (docs/batch.md): a list of result dicts");
+}
+
 void bindQueries(py::module_& m) {
   using Floats = py::array_t<float, py::array::c_style | py::array::forcecast>;
   using Indices = py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>;
@@ -350,4 +382,5 @@ PYBIND11_MODULE(simdphys, m) {
   bindWorld(m);
   bindScene(m);
   bindQueries(m);
+  bindBatch(m);
 }

@@ -125,3 +125,16 @@ def test_mesh_raycasts_and_box_queries_from_numpy():
     assert sorted(map(tuple, pairs.tolist())) == [(0, 0), (0, 1)]
     with pytest.raises(simdphys.Error, match=r"shape \(n, 3\)"):
         mesh.raycast(np.zeros((2, 2), dtype=np.float32), np.zeros((2, 2), dtype=np.float32))
+
+
+def test_the_batch_runner_gives_each_job_the_result_it_gives_alone():
+    batch = SCENES.parent / "tests" / "batch" / "small.json"
+    together = simdphys.run_batch(batch, threads=2)
+    alone = simdphys.run_batch(batch, threads=1)
+    assert len(together) == 7
+    assert [r["job"] for r in together] == list(range(7))
+    assert not any(r["failed"] for r in together)
+    assert [r["state_hash"] for r in together] == [r["state_hash"] for r in alone]
+    # The sweep's two substep counts give two different pyramids, both standing.
+    assert together[0]["state_hash"] != together[1]["state_hash"]
+    assert together[0]["standing"] and together[0]["bodies"] == 385
