@@ -49,8 +49,8 @@ void addBatch(CLI::App& app) {
   cmd->add_option("--json", o->json, "Also write the results to this JSON file");
   cmd->footer(
       "Examples:\n"
-      "  simdphys batch scenes/sweep.json --threads 2 --json results.json\n"
-      "  mpirun -n 4 simdphys-batch-mpi scenes/sweep.json --json results.json   (across "
+      "  simdphys batch scenes/batches/sweep.json --threads 2 --json results.json\n"
+      "  mpirun -n 4 simdphys-batch-mpi scenes/batches/sweep.json --json results.json   (across "
       "processes)");
   cmd->callback([o] {
     const std::vector<BatchJob> jobs = loadBatch(o->file);

@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 
+#include "simdphys/measures.hpp"
 #include "workloads/cloth.hpp"
 #include "workloads/particles.hpp"
 #include "workloads/pyramid.hpp"
@@ -150,6 +151,23 @@ TEST(SceneFile, PlaygroundHoldsEverySectionAndStepsFinite) {
   const ParticleSystem& particles = scene.world.particles(scene.particleSystems[0]);
   for (std::size_t i = 0; i < particles.size(); ++i)
     ASSERT_GE(particles.y()[i], 0.0f);  // above the plane
+}
+
+TEST(SceneFile, EverySceneInScenesLoadsAndSteps) {
+  std::size_t scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
+    if (entry.path().extension() != ".json") continue;  // batches/ holds batch files
+    SceneFile scene = loadScene(entry.path());
+    WorldMonitor monitor(scene.world);
+    for (int frame = 0; frame < 2; ++frame) scene.world.step(), monitor.observe(scene.world);
+    const WorldMeasures m = monitor.measure(scene.world);
+    EXPECT_TRUE(m.bodies.finite) << entry.path();
+    for (const ClothMeasures& c : m.cloths) EXPECT_TRUE(c.finite) << entry.path();
+    for (const ParticleMeasures& p : m.particles) EXPECT_TRUE(p.finite) << entry.path();
+    EXPECT_GT(scene.frames, 0) << entry.path();
+    ++scenes;
+  }
+  EXPECT_EQ(scenes, 5u);  // W3, W4, W5 at two sizes, the playground
 }
 
 // Every file of tests/scene_files/ and the message it must give after "<its path>: ".

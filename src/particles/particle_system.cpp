@@ -98,14 +98,8 @@ std::span<float> ParticleSystem::writableField(std::size_t f) {
 }
 
 void ParticleSystem::checkFields(const std::string& where) const {
-  static constexpr const char* kNames[] = {"x", "y", "z", "vx", "vy", "vz"};
-  for (std::size_t f = F::Particle::x; f <= F::Particle::vz; ++f) {
-    const std::span<const float> v = field(f).view();
-    for (std::size_t i = 0; i < v.size(); ++i)
-      if (!(std::abs(v[i]) <= kMaxCoordinate))
-        throw Error(where + ": particle " + std::to_string(i) + ": " + kNames[f] + " is " +
-                    std::to_string(v[i]) + ", not finite or beyond +-1e18");
-  }
+  static constexpr const char* kNames[] = {"x", "y", "z", "vx", "vy", "vz"};  // fields x .. vz
+  requireInRange(kNames, where, "particle");
 }
 
 Vec3f ParticleSystem::position(Handle h) const {

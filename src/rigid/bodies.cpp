@@ -192,15 +192,9 @@ std::span<float> RigidBodies::writableField(std::size_t f) {
 }
 
 void RigidBodies::checkFields(const std::string& where) const {
-  static constexpr const char* kNames[] = {"x",  "y",  "z",  "qx", "qy", "qz", "qw",
+  static constexpr const char* kNames[] = {"x",  "y",  "z",  "qx", "qy", "qz", "qw",  // x .. wz
                                            "vx", "vy", "vz", "wx", "wy", "wz"};
-  for (std::size_t f = F::Body::x; f <= F::Body::wz; ++f) {
-    const std::span<const float> v = field(f).view();
-    for (std::size_t i = 0; i < v.size(); ++i)
-      if (!(std::abs(v[i]) <= kMaxCoordinate))
-        throw Error(where + ": body " + std::to_string(i) + ": " + kNames[f] + " is " +
-                    std::to_string(v[i]) + ", not finite or beyond +-1e18");
-  }
+  requireInRange(kNames, where, "body");
   for (std::uint32_t i = 0; i < size(); ++i)
     requireOrientation(Quatf(value(F::Body::qw, i), value(F::Body::qx, i), value(F::Body::qy, i),
                              value(F::Body::qz, i)),

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <span>
 #include <string>
@@ -83,6 +84,17 @@ class StreamSet {
     detail::requireIndex(i, size(), where);
     validate(shape, detail::at(where, i));
     store(i, values);
+  }
+  // Throws Error "where: <element> i: <name> is v, not finite or beyond +-1e18" for the first
+  // live value of fields 0 .. names.size() - 1 outside the supported range (math.hpp): what a
+  // stream written in place (numpy views) is checked with before a step.
+  void requireInRange(std::span<const char* const> names, const std::string& where,
+                      const char* element) const {
+    for (std::size_t f = 0; f < names.size(); ++f)
+      for (std::size_t i = 0; i < size(); ++i)
+        if (!(std::abs(fields_[f][i]) <= kMaxCoordinate))
+          throw Error(where + ": " + element + " " + std::to_string(i) + ": " + names[f] + " is " +
+                      std::to_string(fields_[f][i]) + ", not finite or beyond +-1e18");
   }
   // Field f's whole padded array, for a kernel that stores whole vectors and writes back the
   // padding's values unchanged (a particle step leaves pinned lanes as they are).
