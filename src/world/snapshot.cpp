@@ -70,7 +70,8 @@ struct Reader {
     using T = typename V::value_type;
     if (n > (in.size() - at) / sizeof(T)) fail("a list is longer than the data left");
     v.resize(std::size_t(n));
-    std::memcpy(static_cast<void*>(v.data()), in.data() + at, std::size_t(n) * sizeof(T));
+    if (n > 0)  // an empty vector's data() may be null, which memcpy may not take
+      std::memcpy(static_cast<void*>(v.data()), in.data() + at, std::size_t(n) * sizeof(T));
     at += std::size_t(n) * sizeof(T);
   }
   std::size_t count(std::size_t) {
