@@ -21,6 +21,8 @@ namespace simdphys {
 inline constexpr std::uint32_t kSnapshotVersion = 1;
 
 std::vector<std::byte> snapshot(const World& world);
+// FNV-1a 64 of snapshot(world): equal hashes, equal states (the batch runner records it).
+std::uint64_t stateHash(const World& world);
 World restore(std::span<const std::byte> bytes);
 
 // The same through a file; errors name the file.

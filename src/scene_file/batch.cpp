@@ -18,12 +18,6 @@ namespace {
 using scenefile::Json;
 using scenefile::Node;
 
-std::uint64_t fnv1a(std::span<const std::byte> bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (const std::byte b : bytes) h = (h ^ std::uint64_t(b)) * 0x100000001b3ull;
-  return h;
-}
-
 void summarise(const WorldMeasures& m, BatchResult& r) {
   r.bodies = m.bodies.count;
   r.maxDisplacement = m.bodies.maxDisplacement;
@@ -118,7 +112,7 @@ BatchResult runJob(const BatchJob& job, std::uint64_t index) {
     }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     summarise(monitor.measure(scene.world), r);
-    r.stateHash = fnv1a(snapshot(scene.world));
+    r.stateHash = stateHash(scene.world);
   } catch (const std::exception& e) {
     r.failed = 1;
     std::strncpy(r.error, e.what(), sizeof r.error - 1);

@@ -285,6 +285,8 @@ std::vector<std::byte> snapshot(const World& world) {
   return std::move(out.out);
 }
 
+std::uint64_t stateHash(const World& world) { return fnv1a(snapshot(world)); }
+
 World restore(std::span<const std::byte> bytes) {
   if (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic.data(), kMagic.size()) != 0)
     throw Error("restore: not a simdphys snapshot (no \"SIMDPHYS-SNAPSHOT\" header)");
