@@ -4,7 +4,8 @@
 // and over their substeps and iterations, for the speed-against-error plot. The defaults run on
 // every path (the contact passes as lane-wide kernels, simd/rigid.cpp) and as the kernels'
 // plain loops ("autovec"); the sweeps on the reference path. Bullet and ODE run in
-// peers/*_pyramid_bench.cpp.
+// peers/*_pyramid_bench.cpp. The same pyramid of hulls (each box given as its 8 corners) shows what
+// the general convex case (GJK, EPA and face clipping) costs beside box-box, and its error.
 #include <algorithm>
 #include <chrono>
 #include <map>
@@ -29,6 +30,7 @@ struct Model {
   RigidSettings settings;
   bool withError;            // run the double reference too (about 40 ms a frame at B = 10)
   bool onReference = false;  // on the reference path (registered once, labelled so)
+  bool hulls = false;        // every box a HullShape of its corners
 };
 
 World pyramidWorld(const Model& m, int base, std::vector<Handle>& handles) {
@@ -43,6 +45,17 @@ World pyramidWorld(const Model& m, int base, std::vector<Handle>& handles) {
     d.position = p, d.halfExtents = Vec3f::Constant(workloads::kPyramidHalf);
     d.mass = workloads::kPyramidMass, d.friction = workloads::kPyramidFriction;
     d.restitution = workloads::kPyramidRestitution;
+    if (m.hulls) {
+      static const auto cube = [] {
+        std::vector<Vec3f> corners;
+        for (int v = 0; v < 8; ++v)
+          corners.push_back(workloads::kPyramidHalf * Vec3f((v & 1) ? 1.0f : -1.0f,
+                                                            (v & 2) ? 1.0f : -1.0f,
+                                                            (v & 4) ? 1.0f : -1.0f));
+        return std::make_shared<const HullShape>(corners);
+      }();
+      d.shape = BodyShape::kHull, d.hull = cube;
+    }
     handles.push_back(world.bodies().add(d));
   }
   return world;
@@ -130,6 +143,9 @@ void registerRigidBenchmarks() {
     fresh.name += "_fresh_manifolds";
     fresh.settings.reuseManifolds = false, fresh.withError = false;
     registerBestPath("pyramid", fresh.name, n, run(fresh, base), frames);
+    Model hulls = m;
+    hulls.name += "_hulls", hulls.hulls = true;
+    registerBestPath("pyramid", hulls.name, n, run(hulls, base), frames);
     for (Model o : others) {
       o.withError = base == 10;
       registerOnce("pyramid", o.name, "reference", n, run(o, base), frames);

@@ -53,6 +53,18 @@ Mesh clothMesh(const Cloth& c) {
   return mesh;
 }
 
+// A hull body's faces as triangle fans, where the body is.
+Mesh hullMesh(const HullShape& shape, const Vec3f& position, const Quatf& orientation) {
+  Mesh mesh;
+  for (const Vec3f& v : shape.vertices()) mesh.vertices.push_back(position + orientation * v);
+  for (int f = 0; f < shape.faceCount(); ++f) {
+    const auto face = shape.face(f);
+    for (std::size_t k = 1; k + 1 < face.size(); ++k)
+      mesh.triangles.push_back({face[0], face[k], face[k + 1]});
+  }
+  return mesh;
+}
+
 Picture picture(const World& world, float particleRadius) {
   Picture p;
   for (const ObstacleShape& s : world.obstacles().shapes()) {
@@ -75,11 +87,15 @@ Picture picture(const World& world, float particleRadius) {
   const RigidBodies& bodies = world.bodies();
   for (std::uint32_t i = 0; i < bodies.size(); ++i) {
     const Handle h = bodies.handle(i);
-    const bool box = bodies.stream(fields::Body::shape)[i] == float(BodyShape::kBox);
-    if (box)
+    const auto shape = BodyShape(int(bodies.stream(fields::Body::shape)[i]));
+    if (shape == BodyShape::kBox)
       p.add({bodies.box(h)}, Kind::kBody);
-    else
+    else if (shape == BodyShape::kSphere)
       p.add({bodies.sphere(h)}, Kind::kBody);
+    else
+      p.add({std::make_shared<const MeshBvh>(
+                hullMesh(*bodies.hull(h), bodies.position(h), bodies.orientation(h)))},
+            Kind::kBody);
   }
   for (std::size_t c = 0; c < world.clothCount(); ++c) {
     const Cloth& cloth = world.cloth(world.clothHandle(c));

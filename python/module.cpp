@@ -9,6 +9,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <memory>
+#include <optional>
 
 #include "simdphys/batch.hpp"
 #include "simdphys/bvh.hpp"
@@ -135,13 +136,22 @@ void bindWorld(py::module_& m) {
           "add_body",
           [](PyWorld& w, const std::string& shape, const Vec3f& position, const Vec3f& halfExtents,
              float radius, float mass, const Vec3f& velocity, bool kinematic, float friction,
-             float restitution) {
+             float restitution,
+             const std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>>&
+                 hullPoints) {
             w.growable("World.add_body");
             BodyDef d;
-            if (shape != "box" && shape != "sphere")
-              throw Error("World.add_body: shape must be \"box\" or \"sphere\", got \"" + shape +
-                          "\"");
-            d.shape = shape == "box" ? BodyShape::kBox : BodyShape::kSphere;
+            if (shape != "box" && shape != "sphere" && shape != "hull")
+              throw Error("World.add_body: shape must be \"box\", \"sphere\" or \"hull\", got \"" +
+                          shape + "\"");
+            d.shape = shape == "box"      ? BodyShape::kBox
+                      : shape == "sphere" ? BodyShape::kSphere
+                                          : BodyShape::kHull;
+            if ((d.shape == BodyShape::kHull) != hullPoints.has_value())
+              throw Error("World.add_body: points are given for a hull, and only for a hull");
+            if (hullPoints)
+              d.hull = std::make_shared<const HullShape>(
+                  points(*hullPoints, "World.add_body: points"), "World.add_body: points");
             d.position = position, d.halfExtents = halfExtents, d.radius = radius, d.mass = mass;
             d.velocity = velocity, d.kinematic = kinematic, d.friction = friction;
             d.restitution = restitution;
@@ -152,7 +162,9 @@ void bindWorld(py::module_& m) {
           py::arg("half_extents") = Vec3f(0.5f, 0.5f, 0.5f), py::arg("radius") = 0.5f,
           py::arg("mass") = 1.0f, py::arg("velocity") = Vec3f::Zero().eval(),
           py::arg("kinematic") = false, py::arg("friction") = 0.6f, py::arg("restitution") = 0.0f,
-          "Adds a rigid body; returns its index")
+          py::arg("points") = py::none(),
+          "Adds a rigid body (a hull: the convex hull of `points`, an (n, 3) array, placed by its "
+          "centre of mass and principal axes); returns its index")
       .def_property_readonly("particle_system_count",
                              [](const PyWorld& w) { return w.world.particleSystemCount(); })
       .def_property_readonly("body_count", [](const PyWorld& w) { return w.world.bodies().size(); })

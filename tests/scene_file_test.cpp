@@ -137,9 +137,13 @@ TEST(SceneFile, PlaygroundHoldsEverySectionAndStepsFinite) {
   ASSERT_EQ(scene.cloths.size(), 2u);
   EXPECT_TRUE(scene.world.cloth(scene.cloths[0]).isGrid());
   EXPECT_EQ(scene.world.cloth(scene.cloths[1]).springs().size(), 4u);
-  EXPECT_EQ(scene.bodies.size(), 4u + 30u);  // the 4 bodies, then the pyramid's 16 + 9 + 4 + 1
+  EXPECT_EQ(scene.bodies.size(), 6u + 30u);  // the 6 bodies, then the pyramid's 16 + 9 + 4 + 1
   const RigidBodies& bodies = scene.world.bodies();
-  EXPECT_TRUE(bodies.kinematic(scene.bodies[3]));
+  EXPECT_TRUE(bodies.kinematic(scene.bodies[5]));
+  // The wedge: 6 points, 5 faces (two triangles, three rectangles); the gem's 8 points all
+  // vertices.
+  EXPECT_EQ(bodies.hull(scene.bodies[3])->faceCount(), 5);
+  EXPECT_EQ(bodies.hull(scene.bodies[4])->vertices().size(), 8u);
   // The quaternion given as (x, y, z, w): a turn of 45 degrees about +y.
   const Quatf q = bodies.orientation(scene.bodies[2]);
   EXPECT_NEAR(q.y(), 0.3826834f, 1e-6f);  // the file's value, normalised (|q| was 1 to 1e-7)
@@ -188,6 +192,8 @@ const std::map<std::string, std::string> kExpected{
     {"unknown_body_key", "/rigid/bodies/0/halfExtent: unknown field"},
     {"negative_half_extent", "/rigid/bodies/17/halfExtents/1: must be positive, got -0.5"},
     {"zero_mass", "/rigid/bodies/0/mass: must be positive, got 0"},
+    {"hull_of_flat_points", "/rigid/bodies/0/points: the points are flat"},
+    {"points_on_a_box", "/rigid/bodies/0/points: only a hull has points"},
     {"negative_time_step", "/settings: timeStep is -0.01, must be in (0, 1] s"},
     {"zero_rigid_substeps", "/rigid/settings: substeps is 0, must be in [1, 64]"},
     {"friction_as_word", "/rigid/bodies/0/friction: must be a number, got the string \"high\""},

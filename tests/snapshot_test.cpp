@@ -91,8 +91,10 @@ TEST(Snapshot, DamagedSnapshotsAreRefusedSayingHow) {
     EXPECT_EQ(errorOf(bad), "restore: the snapshot is corrupt (its checksum differs)") << at;
   }
   std::vector<std::byte> later = good;
-  later[18] = std::byte{2};  // the version, right after the 18-byte magic
-  EXPECT_EQ(errorOf(later), "restore: snapshot format version 2, this library reads version 1");
+  later[18] = std::byte{kSnapshotVersion + 1};  // the version, right after the 18-byte magic
+  EXPECT_EQ(errorOf(later), "restore: snapshot format version " +
+                                std::to_string(kSnapshotVersion + 1) +
+                                ", this library reads version " + std::to_string(kSnapshotVersion));
 }
 
 TEST(Snapshot, AFileThatIsNoSnapshotIsRefusedNamingIt) {

@@ -1,4 +1,5 @@
-// Rigid bodies (book chapter 15 and its appendix): spheres and boxes with mass and inertia in
+// Rigid bodies (book chapter 15 and its appendix): spheres, boxes and convex hulls with mass and
+// inertia in
 // structure-of-arrays streams, stepped by a World (world.hpp) against each other and against the
 // world's static obstacles (obstacles.hpp: planes, spheres, boxes, triangle meshes).
 //
@@ -25,6 +26,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,6 +35,7 @@
 #include "simdphys/geometry3d/primitives.hpp"
 #include "simdphys/geometry3d/streams.hpp"
 #include "simdphys/handle.hpp"
+#include "simdphys/rigid/hull.hpp"
 #include "simdphys/stream_fields.hpp"
 
 namespace simdphys {
@@ -74,7 +77,7 @@ struct ContactCacheT {
 };
 }  // namespace detail
 
-enum class BodyShape : std::uint8_t { kSphere, kBox };
+enum class BodyShape : std::uint8_t { kSphere, kBox, kHull };
 enum class ContactModel : std::uint8_t { kSoftStep, kBaumgarte, kProjection };
 const char* toString(ContactModel model);
 
@@ -83,6 +86,9 @@ struct BodyDef {
   BodyShape shape = BodyShape::kBox;
   Vec3f halfExtents{0.5f, 0.5f, 0.5f};  // a box's, m, each > 0
   float radius = 0.5f;                  // a sphere's, m, > 0
+  // A hull's shape, shared by every body made of it. The body's position is the shape's centre of
+  // mass and its orientation the shape's principal frame (rigid/hull.hpp).
+  std::shared_ptr<const HullShape> hull;
   Vec3f position = Vec3f::Zero();
   Quatf orientation = Quatf::Identity();  // unit within 1e-3 (normalised on entry)
   Vec3f velocity = Vec3f::Zero();         // m/s
@@ -157,8 +163,9 @@ class RigidBodies : public StreamSet<fields::Body> {
   bool asleep(Handle body) const;
   std::size_t awakeCount() const;
   // The body's shape where it is now.
-  Obb box(Handle body) const;        // throws Error if it is a sphere
-  Sphere sphere(Handle body) const;  // throws Error if it is a box
+  Obb box(Handle body) const;                                // throws Error if it is not a box
+  Sphere sphere(Handle body) const;                          // throws Error if it is not a sphere
+  std::shared_ptr<const HullShape> hull(Handle body) const;  // throws Error if not a hull
   // Each throws Error naming the call and the body if the handle is stale or the value invalid,
   // and changes nothing then.
   void setPosition(Handle body, const Vec3f& position);
@@ -212,6 +219,9 @@ class RigidBodies : public StreamSet<fields::Body> {
 
   RigidSettings settings_;
   HandleTable handles_;
+  // The hull shapes bodies were made of, each once, named by the body's `hull` field; kept for
+  // the life of the RigidBodies (a game has few shapes, shared by many bodies).
+  std::vector<std::shared_ptr<const HullShape>> hulls_;
   detail::ContactCacheT<float> cache_;
   float deepest_ = 0;
   std::size_t manifolds_ = 0, points_ = 0, colours_ = 0, overflow_ = 0;

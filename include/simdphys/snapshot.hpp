@@ -18,7 +18,7 @@
 
 namespace simdphys {
 
-inline constexpr std::uint32_t kSnapshotVersion = 1;
+inline constexpr std::uint32_t kSnapshotVersion = 2;
 
 std::vector<std::byte> snapshot(const World& world);
 // FNV-1a 64 of snapshot(world): equal hashes, equal states (the batch runner records it).

@@ -130,6 +130,7 @@ struct Body {
     tz,
     sleepTime,
     island,
+    hull,  // a hull body's shape: its index in RigidBodies' hulls, else 0
     kCount
   };
   static constexpr float kPad[kCount] = {};

@@ -85,6 +85,21 @@ def test_body_views_write_through_and_a_bad_quaternion_is_refused():
         world.step()
 
 
+def test_a_hull_body_rests_on_the_ground_and_bad_points_are_refused():
+    world = simdphys.World()
+    world.add_plane([0, 1, 0])
+    corners = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)])
+    world.add_body(shape="hull", points=corners, position=[0, 2, 0])
+    with pytest.raises(simdphys.Error, match="the points are flat"):
+        world.add_body(shape="hull", points=corners[corners[:, 1] > 0], position=[0, 4, 0])
+    with pytest.raises(simdphys.Error, match="only for a hull"):
+        world.add_body(shape="box", points=corners)
+    assert world.body_count == 1
+    world.step(120)
+    # A unit cube made of its corners rests on its face, its centre within the 5 mm slop of 0.5.
+    assert world.bodies()["y"][0] == pytest.approx(0.5, abs=0.005)
+
+
 def test_adding_after_a_view_is_refused():
     world = simdphys.World()
     world.add_body(position=[0, 1, 0])

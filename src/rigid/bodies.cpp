@@ -1,5 +1,6 @@
 // RigidBodies (rigid.hpp): settings, bodies as dense streams behind handles, their validation and
 // inertia.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -90,7 +91,9 @@ Handle RigidBodies::add(const BodyDef& d) {
   const std::string where = "RigidBodies::add: body " + std::to_string(size());
   using detail::require;
   const auto shape = static_cast<unsigned>(d.shape);
-  require(shape <= unsigned(BodyShape::kBox), shape, where, "shape", "not a BodyShape");
+  require(shape <= unsigned(BodyShape::kHull), shape, where, "shape", "not a BodyShape");
+  if (d.shape == BodyShape::kHull && !d.hull)
+    throw Error(where + ": hull is empty; a hull body needs its HullShape");
   detail::requireFiniteField(d.position, where, "position");
   requireOrientation(d.orientation, where);
   detail::requireFiniteField(d.velocity, where, "velocity");
@@ -104,6 +107,8 @@ Handle RigidBodies::add(const BodyDef& d) {
                        : "halfExtents.z",
               "must be in (0, 1e6] m");
     half = d.halfExtents;
+  } else if (d.shape == BodyShape::kHull) {
+    half = d.hull->halfExtents();
   } else {
     require(d.radius > 0 && d.radius <= 1e6f, d.radius, where, "radius", "must be in (0, 1e6] m");
     half = {d.radius, 0, 0};
@@ -116,7 +121,8 @@ Handle RigidBodies::add(const BodyDef& d) {
   require(d.restitution >= 0 && d.restitution <= 1, d.restitution, where, "restitution",
           "must be in [0, 1]");
 
-  // Inertia of a solid box (m/3 (b^2 + c^2) with half extents) or sphere (2/5 m r^2).
+  // Inertia of a solid box (m/3 (b^2 + c^2) with half extents), sphere (2/5 m r^2) or hull (its
+  // principal moments per unit mass times m).
   Vec3f invInertia = Vec3f::Zero();
   const float invMass = d.kinematic ? 0.0f : 1.0f / d.mass;
   if (!d.kinematic) {
@@ -124,9 +130,16 @@ Handle RigidBodies::add(const BodyDef& d) {
     const Vec3d inertia =
         d.shape == BodyShape::kBox
             ? Vec3d(Vec3d(h2.y() + h2.z(), h2.x() + h2.z(), h2.x() + h2.y()) * (double(d.mass) / 3))
-            : Vec3d(Vec3d::Constant(0.4 * double(d.mass) * h2.x()));
+        : d.shape == BodyShape::kHull ? Vec3d(d.hull->inertia().cast<double>() * double(d.mass))
+                                      : Vec3d(Vec3d::Constant(0.4 * double(d.mass) * h2.x()));
     invInertia = inertia.cwiseInverse().cast<float>();
     require(invInertia.allFinite(), d.mass, where, "mass", "gives an inertia out of range");
+  }
+  float hull = 0;
+  if (d.shape == BodyShape::kHull) {
+    const auto known = std::find(hulls_.begin(), hulls_.end(), d.hull);
+    hull = float(known - hulls_.begin());
+    if (known == hulls_.end()) hulls_.push_back(d.hull);
   }
   const Quatf q = d.orientation.normalized();
   append({d.position.x(),
@@ -159,7 +172,8 @@ Handle RigidBodies::add(const BodyDef& d) {
           0,
           0,
           0,
-          0});
+          0,
+          hull});
   return handles_.add();
 }
 
@@ -242,15 +256,22 @@ bool RigidBodies::kinematic(Handle h) const {
 Obb RigidBodies::box(Handle h) const {
   const std::uint32_t i = require(h, "RigidBodies::box");
   if (value(F::Body::shape, i) != float(BodyShape::kBox))
-    throw Error("RigidBodies::box: body " + std::to_string(i) + " is a sphere");
+    throw Error("RigidBodies::box: body " + std::to_string(i) + " is not a box");
   return {loadVec(F::Body::x, i), loadVec(F::Body::ex, i), orientation(h).toRotationMatrix()};
 }
 
 Sphere RigidBodies::sphere(Handle h) const {
   const std::uint32_t i = require(h, "RigidBodies::sphere");
   if (value(F::Body::shape, i) != float(BodyShape::kSphere))
-    throw Error("RigidBodies::sphere: body " + std::to_string(i) + " is a box");
+    throw Error("RigidBodies::sphere: body " + std::to_string(i) + " is not a sphere");
   return {loadVec(F::Body::x, i), value(F::Body::ex, i)};
+}
+
+std::shared_ptr<const HullShape> RigidBodies::hull(Handle h) const {
+  const std::uint32_t i = require(h, "RigidBodies::hull");
+  if (value(F::Body::shape, i) != float(BodyShape::kHull))
+    throw Error("RigidBodies::hull: body " + std::to_string(i) + " is not a hull");
+  return hulls_[std::size_t(value(F::Body::hull, i))];
 }
 
 void RigidBodies::setPosition(Handle h, const Vec3f& p) {

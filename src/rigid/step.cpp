@@ -28,6 +28,8 @@ std::vector<detail::BodyT<T>> Internals::load(const RigidBodies& r) {
     b.invInertia = vec(F::Body::invIx, i);
     b.shape = BodyShape(int(r.value(F::Body::shape, i)));
     b.half = vec(F::Body::ex, i);
+    if (b.shape == BodyShape::kHull)
+      b.hull = r.hulls_[std::size_t(r.value(F::Body::hull, i))].get();
     b.friction = T(r.value(F::Body::friction, i));
     b.restitution = T(r.value(F::Body::restitution, i));
     b.force = vec(F::Body::fx, i), b.torque = vec(F::Body::tx, i);

@@ -101,19 +101,31 @@ Cloth clothNetwork(const Node& n, const ClothSettings& settings) {
 // A body's fields over `def` (a pyramid's template, or the defaults).
 BodyDef body(const Node& n, BodyDef def, bool positioned) {
   if (positioned)
-    n.keys({"shape", "halfExtents", "radius", "position", "rotation", "velocity", "angularVelocity",
-            "mass", "kinematic", "friction", "restitution"});
+    n.keys({"shape", "halfExtents", "radius", "points", "position", "rotation", "velocity",
+            "angularVelocity", "mass", "kinematic", "friction", "restitution"});
   else
-    n.keys({"shape", "halfExtents", "radius", "rotation", "velocity", "angularVelocity", "mass",
-            "kinematic", "friction", "restitution"});
+    n.keys({"shape", "halfExtents", "radius", "points", "rotation", "velocity", "angularVelocity",
+            "mass", "kinematic", "friction", "restitution"});
   if (auto s = n.find("shape")) {
     const std::string shape = s->string();
     if (shape == "box")
       def.shape = BodyShape::kBox;
     else if (shape == "sphere")
       def.shape = BodyShape::kSphere;
+    else if (shape == "hull")
+      def.shape = BodyShape::kHull;
     else
-      s->fail("\"" + shape + "\" is not one of box, sphere");
+      s->fail("\"" + shape + "\" is not one of box, sphere, hull");
+  }
+  if (def.shape == BodyShape::kHull) {
+    // The hull of its points, about their centre of mass and in their principal axes: `position`
+    // places that frame (rigid/hull.hpp).
+    const Node points = n.require("points");
+    std::vector<Vec3f> p(points.size(HullShape::kMaxPoints));
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] = points[i].vec3(-1e6, 1e6);
+    def.hull = within(points, [&] { return std::make_shared<const HullShape>(p, points.where()); });
+  } else if (n.find("points")) {
+    n.require("points").fail("only a hull has points");
   }
   if (auto h = n.find("halfExtents")) def.halfExtents = h->positiveVec3(1e6);
   n.readPositive("radius", def.radius, 1e6);

@@ -2,6 +2,8 @@
 // by a Reader to restore, so the two cannot disagree on the order.
 #include "simdphys/snapshot.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string_view>
@@ -237,10 +239,37 @@ struct Snapshot {
   }
 
   template <class Ar>
+  static void io(Ar& a, HullShape& h) {
+    static_assert(sizeof(HullShape) == 176, "a member was added: save it here");
+    a.list(h.vertices_), a.list(h.faceIndices_), a.list(h.faceStart_), a.list(h.normals_);
+    a.list(h.offsets_);
+    a.pod(h.half_), a.pod(h.inertia_), a.pod(h.centre_), a.pod(h.volume_), a.pod(h.rotation_);
+    if constexpr (Ar::kReading) {
+      const std::size_t faces = h.offsets_.size();
+      if (h.faceStart_.size() != faces + 1 || h.normals_.size() != faces ||
+          h.faceStart_.front() != 0 || h.faceStart_.back() != h.faceIndices_.size() ||
+          !std::is_sorted(h.faceStart_.begin(), h.faceStart_.end()))
+        Reader::fail("a hull's faces");
+      for (const std::uint8_t v : h.faceIndices_)
+        if (v >= h.vertices_.size()) Reader::fail("a hull's face names no vertex");
+    }
+  }
+
+  template <class Ar>
   static void io(Ar& a, RigidBodies& b) {
     io(a, static_cast<StreamSet<fields::Body>&>(b));
     io(a, b.settings_);
     io(a, b.handles_);
+    b.hulls_.resize(a.count(b.hulls_.size()));
+    for (auto& h : b.hulls_) {
+      if constexpr (Ar::kReading) {
+        auto shape = std::shared_ptr<HullShape>(new HullShape());
+        io(a, *shape);
+        h = std::move(shape);
+      } else {
+        io(a, const_cast<HullShape&>(*h));
+      }
+    }
     a.list(b.cache_.manifolds);
     io(a, b.cache_.pairs);
     // The last step's counts (not its wall time, which is no state).
@@ -248,6 +277,13 @@ struct Snapshot {
     if constexpr (Ar::kReading) {
       validate(b.settings_, "restore: the rigid bodies");
       if (b.handles_.size() != b.size()) Reader::fail("bodies and their handles differ");
+      for (std::size_t i = 0; i < b.size(); ++i) {
+        const float shape = b.value(fields::Body::shape, i), hull = b.value(fields::Body::hull, i);
+        if (!(shape == float(BodyShape::kSphere) || shape == float(BodyShape::kBox) ||
+              (shape == float(BodyShape::kHull) && hull >= 0 && hull < float(b.hulls_.size()) &&
+               hull == std::floor(hull))))
+          Reader::fail("a body's shape");
+      }
     }
   }
 

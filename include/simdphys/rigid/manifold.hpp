@@ -29,6 +29,7 @@
 #include <cstdint>
 
 #include "simdphys/geometry3d/primitives.hpp"
+#include "simdphys/rigid/hull.hpp"
 
 namespace simdphys {
 
@@ -68,8 +69,8 @@ using ContactPoint = ContactPointT<float>;
 using Manifold = ManifoldT<float>;
 using Manifoldd = ManifoldT<double>;
 
-// The manifold of each pair of shapes the rigid bodies need (bodies are spheres and boxes; static
-// obstacles add planes and the triangles of meshes). Compiled for float and double
+// The manifold of each pair of shapes the rigid bodies need (bodies are spheres, boxes and hulls;
+// static obstacles add planes and the triangles of meshes). Compiled for float and double
 // (src/reference/rigid/manifold.cpp).
 template <class T>
 ManifoldT<T> collide(const SphereT<T>& a, const SphereT<T>& b, T maxSeparation);
@@ -97,6 +98,35 @@ template <class T>
 ManifoldT<T> collide(const SphereT<T>& a, const TriangleT<T>& b, T maxSeparation);
 template <class T>
 ManifoldT<T> collide(const ObbT<T>& a, const TriangleT<T>& b, T maxSeparation,
+                     unsigned activeEdges = 7);
+
+// A hull shape placed in the world: its frame (rigid/hull.hpp) at `center` with `axes`.
+template <class T>
+struct PlacedHullT {
+  const HullShape* shape;
+  Vec3<T> center;
+  Mat3<T> axes;
+};
+
+// Hulls, the general convex case (src/reference/rigid/hull-inl.hpp): GJK gives the normal of
+// shapes apart within maxSeparation, EPA of overlapping ones; then the two faces most facing each
+// other along it (a hull's, a box's, the triangle) are clipped as box-box clips, the one more
+// nearly square to the normal the reference, and the points within maxSeparation kept, at most
+// four as box-box keeps them; GJK's or EPA's single point where none is. A face square to the
+// normal within 0.8 degrees gives the normal. Against a triangle, an inactive edge never gives
+// the normal (as for boxes): the triangle's face does, with the hull's deepest vertex along it.
+// Against a plane: the vertices within maxSeparation, four kept. Ids name the two faces and the
+// clipped polygon's edges (below 1024 against a triangle).
+template <class T>
+ManifoldT<T> collide(const PlacedHullT<T>& a, const SphereT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const PlacedHullT<T>& a, const ObbT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const PlacedHullT<T>& a, const PlacedHullT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const PlacedHullT<T>& a, const PlaneT<T>& b, T maxSeparation);
+template <class T>
+ManifoldT<T> collide(const PlacedHullT<T>& a, const TriangleT<T>& b, T maxSeparation,
                      unsigned activeEdges = 7);
 
 // The same manifold seen from the other shape: the normal reversed, points and ids kept.

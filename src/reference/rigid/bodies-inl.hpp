@@ -19,7 +19,8 @@ struct BodyT {
   T invMass;
   Vec3<T> invInertia;  // about the body's own axes
   BodyShape shape;
-  Vec3<T> half;  // box half extents; half.x() is a sphere's radius
+  Vec3<T> half;  // box half extents; half.x() is a sphere's radius; a hull's shape's extents
+  const HullShape* hull = nullptr;  // a hull's shape
   T friction, restitution;
   Vec3<T> force, torque;
   T sleepTime;
@@ -27,6 +28,7 @@ struct BodyT {
 
   ObbT<T> box() const { return {x, half, q.toRotationMatrix()}; }
   SphereT<T> sphere() const { return {x, half.x()}; }
+  PlacedHullT<T> placedHull() const { return {hull, x, q.toRotationMatrix()}; }
 };
 
 // A body as the solver moves it within a step (Box2D v3's b2BodyState): velocities, and the

@@ -22,9 +22,11 @@ struct ClipVertex {
   Vec3<T> p;
   std::uint32_t in, out;
 };
-template <class T>
+// Capacity N: a box's face has 4 corners and each of its 4 clips adds at most one; a hull's
+// faces have at most 64 (rigid/hull.hpp).
+template <class T, std::size_t N = 8>
 struct ClipPolygon {
-  std::array<ClipVertex<T>, 8> v;  // 4 corners, and each of the 4 clips adds at most one
+  std::array<ClipVertex<T>, N> v;
   int n = 0;
   void push(const ClipVertex<T>& x) {
     if (n < int(v.size())) v[std::size_t(n++)] = x;
@@ -35,10 +37,10 @@ struct ClipPolygon {
 // edge crosses the plane, take `label` for the part of the polygon that now runs along it. A
 // vertex within `snap` of the plane counts as on it: kept as itself, never doubled by a crossing
 // point next to it (flush faces of a stack then keep their corners' ids through rounding).
-template <class T>
-ClipPolygon<T> clip(const ClipPolygon<T>& poly, const Vec3<T>& side, const Vec3<T>& origin, T h,
-                    T snap, std::uint32_t label) {
-  ClipPolygon<T> out;
+template <class T, std::size_t N>
+ClipPolygon<T, N> clip(const ClipPolygon<T, N>& poly, const Vec3<T>& side, const Vec3<T>& origin,
+                       T h, T snap, std::uint32_t label) {
+  ClipPolygon<T, N> out;
   for (int k = 0; k < poly.n; ++k) {
     const ClipVertex<T>& p = poly.v[std::size_t(k)];
     const ClipVertex<T>& q = poly.v[std::size_t((k + 1) % poly.n)];

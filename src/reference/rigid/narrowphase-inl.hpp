@@ -33,24 +33,36 @@ Vec3<T> reach(const BodyT<T>& b) {
   return b.q.toRotationMatrix().cwiseAbs() * b.half;
 }
 
+// f(the body's shape where it is): a SphereT, ObbT or PlacedHullT.
+template <class T, class F>
+auto visitShape(const BodyT<T>& b, F f) {
+  if (b.shape == BodyShape::kSphere) return f(b.sphere());
+  if (b.shape == BodyShape::kHull) return f(b.placedHull());
+  return f(b.box());
+}
+
+// The manifold of a against b, from whichever of collide(a, b) and collide(b, a) manifold.hpp
+// has, normal from a to b.
+template <class T, class SA, class SB>
+ManifoldT<T> collideEither(const SA& a, const SB& b, T maxSeparation) {
+  if constexpr (requires { collide(a, b, maxSeparation); })
+    return collide(a, b, maxSeparation);
+  else
+    return flipped(collide(b, a, maxSeparation));
+}
+
 // The manifold of body a against shape b (body or obstacle), normal from a to b.
 template <class T>
 ManifoldT<T> collideBody(const BodyT<T>& a, const BodyT<T>& b, T maxSeparation) {
-  if (a.shape == BodyShape::kSphere)
-    return b.shape == BodyShape::kSphere ? collide(a.sphere(), b.sphere(), maxSeparation)
-                                         : collide(a.sphere(), b.box(), maxSeparation);
-  return b.shape == BodyShape::kSphere ? flipped(collide(b.sphere(), a.box(), maxSeparation))
-                                       : collide(a.box(), b.box(), maxSeparation);
+  return visitShape(a, [&](const auto& sa) {
+    return visitShape(b, [&](const auto& sb) { return collideEither(sa, sb, maxSeparation); });
+  });
 }
 
 template <class T>
 ManifoldT<T> collideObstacle(const BodyT<T>& a, const ObstacleShape& shape, T maxSeparation) {
   const auto against = [&](const auto& s) -> ManifoldT<T> {
-    if (a.shape == BodyShape::kSphere) return collide(a.sphere(), s, maxSeparation);
-    if constexpr (std::is_same_v<std::decay_t<decltype(s)>, SphereT<T>>)
-      return flipped(collide(s, a.box(), maxSeparation));
-    else
-      return collide(a.box(), s, maxSeparation);
+    return visitShape(a, [&](const auto& sa) { return collideEither(sa, s, maxSeparation); });
   };
   if (const auto* p = std::get_if<Plane>(&shape)) return against(cast<T>(*p));
   if (const auto* s = std::get_if<Sphere>(&shape)) return against(cast<T>(*s));
@@ -82,9 +94,12 @@ void collideMesh(const BodyT<T>& body, const MeshBvh& mesh, const Aabb& box, T m
   const std::span<const std::uint8_t> active = mesh.activeEdges();
   for (const std::uint32_t t : mesh.overlapping(box)) {
     const TriangleT<T> tri = cast<T>(mesh.mesh().triangle(t));
-    const ManifoldT<T> m = body.shape == BodyShape::kSphere
-                               ? collide(body.sphere(), tri, maxSeparation)
-                               : collide(body.box(), tri, maxSeparation, active[t]);
+    const ManifoldT<T> m = visitShape(body, [&](const auto& s) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(s)>, SphereT<T>>)
+        return collide(s, tri, maxSeparation);
+      else
+        return collide(s, tri, maxSeparation, active[t]);
+    });
     if (m.count == 0) continue;
     auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
       return x.normal.dot(m.normal) > T(kActiveEdgeCosine);
