@@ -257,7 +257,9 @@ TEST(HullManifolds, RandomPairsAgreeWithEpaAndLieOnTheSurfaces) {
     // point (an edge or vertex contact) is EPA's own.
     const double sticky = 0.05 * pen->depth + 1e-3 * 0.6;
     EXPECT_LE(-deepest, pen->depth + sticky + 1e-6);
-    if (m.points[0].id == 0xFFFFu) EXPECT_NEAR(-deepest, pen->depth, 1e-9);
+    if (m.points[0].id == 0xFFFFu) {
+      EXPECT_NEAR(-deepest, pen->depth, 1e-9);
+    }
   }
   EXPECT_GT(overlapping, 40);
 }
