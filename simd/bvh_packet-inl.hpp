@@ -22,26 +22,54 @@ class RayPacket {
 
  public:
   // Lane i traces ray index[i] of `rays` (kAbsentLane: none).
+  // The lanes' rays are set up across the lanes, with traversalRay's operations
+  // (core/traversal_ray.hpp: the same divisions and choices, so the same values bit for bit); a
+  // lane that walks alone (single()) takes its TraversalRay from the stream then.
   RayPacket(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index)
-      : mesh_(mesh), index_(index) {
-    finite_ = true;
+      : mesh_(mesh), rays_(rays), index_(index) {
+    using R = fields::Ray;
+    alignas(64) float direction[3][N];
+    std::uint32_t present = 0;
     for (std::size_t i = 0; i < N; ++i) {
-      const bool present = index[i] != kAbsentLane;
       // An absent lane's bound is -inf: no box or triangle passes it.
-      ray_[i] =
-          present ? detail::traversalRay(rays, index[i])
-                  : detail::traversalRay(0, 0, 0, 1, 1, 1, -std::numeric_limits<float>::infinity());
-      const detail::TraversalRay& r = ray_[i];
-      hits_[i] = Closest(r.tMax);
-      bound_[i] = r.tMax;
-      for (int a = 0; a < 3; ++a) origin_[a][i] = r.origin[a], inverse_[a][i] = r.inverse[a];
-      sx_[i] = r.sx, sy_[i] = r.sy, sz_[i] = r.sz;
-      // The shear's frame: kz, and whether kx and ky are swapped (a negative d[kz]).
-      const int frame = 2 * r.kz + (r.kx != (r.kz + 1) % 3);
-      frame_[i] = float(frame);
-      if (present) frames_ |= 1u << frame, finite_ = finite_ && r.finiteInverse;
+      const bool here = index[i] != kAbsentLane;
+      present |= std::uint32_t(here) << i;
+      for (int a = 0; a < 3; ++a) {
+        origin_[a][i] = here ? rays[R::origin + std::size_t(a)][index[i]] : 0.0f;
+        direction[a][i] = here ? rays[R::direction + std::size_t(a)][index[i]] : 1.0f;
+      }
+      bound_[i] = here ? rays[R::tMax][index[i]] : -std::numeric_limits<float>::infinity();
+      hits_[i] = Closest(bound_[i]);
     }
-    bound(index);
+    const D d;
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    for (std::size_t h = 0; h < N; h += kLanes) {
+      const auto dx = hn::Load(d, direction[0] + h), dy = hn::Load(d, direction[1] + h),
+                 dz = hn::Load(d, direction[2] + h);
+      bool finite = true;
+      for (int a = 0; a < 3; ++a) {
+        const auto inverse = hn::Div(one, hn::Load(d, direction[a] + h));
+        hn::Store(inverse, d, inverse_[a] + h);
+        finite = finite && hn::AllTrue(d, hn::IsFinite(inverse));
+      }
+      // kz: the first axis of largest |d|; kx, ky the next two, swapped for a negative d[kz].
+      const auto y = hn::Gt(hn::Abs(dy), hn::Abs(dx));
+      const auto z = hn::Gt(hn::Abs(dz), hn::IfThenElse(y, hn::Abs(dy), hn::Abs(dx)));
+      const auto along = hn::IfThenElse(z, dz, hn::IfThenElse(y, dy, dx));
+      const auto next = hn::IfThenElse(z, dx, hn::IfThenElse(y, dz, dy));
+      const auto last = hn::IfThenElse(z, dy, hn::IfThenElse(y, dx, dz));
+      const auto swapped = hn::Lt(along, zero);
+      hn::Store(hn::Div(hn::IfThenElse(swapped, last, next), along), d, sx_ + h);
+      hn::Store(hn::Div(hn::IfThenElse(swapped, next, last), along), d, sy_ + h);
+      hn::Store(hn::Div(one, along), d, sz_ + h);
+      const auto kz = hn::IfThenElse(z, hn::Set(d, 2.0f), hn::IfThenElse(y, one, zero));
+      hn::Store(hn::Add(hn::Add(kz, kz), hn::IfThenElse(swapped, one, zero)), d, frame_ + h);
+      // Absent lanes' inverses are 1: only present lanes can make the packet infinite.
+      finite_ = finite_ && finite;
+    }
+    for (std::uint32_t m = present; m != 0; m &= m - 1)
+      frames_ |= 1u << int(frame_[__builtin_ctz(m)]);
+    bound(present);
   }
 
   // Traces the packet and writes each present ray's closest hit at out[index].
@@ -107,26 +135,27 @@ class RayPacket {
   // Embree's hybrid traversal culls a node for a whole packet): the range of its origins and
   // inverse directions per axis. Only for a packet in one octant with finite, non-zero inverses,
   // where each face's distance is monotone in origin and inverse.
-  void bound(const std::uint32_t* index) {
-    bool first = true;
-    for (std::size_t i = 0; i < N; ++i) {
-      if (index[i] == kAbsentLane) continue;
-      const detail::TraversalRay& r = ray_[i];
-      for (int a = 0; a < 3; ++a) {
-        if (first) {
-          negative_[a] = r.negative[a];
-          originLo_[a] = originHi_[a] = r.origin[a];
-          inverseLo_[a] = inverseHi_[a] = r.inverse[a];
-        }
-        cull_ = cull_ && r.negative[a] == negative_[a] && r.inverse[a] != 0;
-        originLo_[a] = std::min(originLo_[a], r.origin[a]);
-        originHi_[a] = std::max(originHi_[a], r.origin[a]);
-        inverseLo_[a] = std::min(inverseLo_[a], r.inverse[a]);
-        inverseHi_[a] = std::max(inverseHi_[a], r.inverse[a]);
-      }
-      first = false;
+  void bound(std::uint32_t present) {
+    cull_ = finite_ && present != 0;
+    if (!cull_) return;
+    const std::size_t first = std::size_t(__builtin_ctz(present));
+    for (int a = 0; a < 3; ++a) {
+      // Finite inverses have the direction's sign (a -0 direction's is -inf, not finite).
+      negative_[a] = inverse_[a][first] < 0;
+      originLo_[a] = originHi_[a] = origin_[a][first];
+      inverseLo_[a] = inverseHi_[a] = inverse_[a][first];
     }
-    cull_ = cull_ && finite_ && !first;
+    for (std::uint32_t m = present; m != 0; m &= m - 1) {
+      const std::size_t i = std::size_t(__builtin_ctz(m));
+      for (int a = 0; a < 3; ++a) {
+        const float inverse = inverse_[a][i];
+        cull_ = cull_ && (inverse < 0) == negative_[a] && inverse != 0;
+        originLo_[a] = std::min(originLo_[a], origin_[a][i]);
+        originHi_[a] = std::max(originHi_[a], origin_[a][i]);
+        inverseLo_[a] = std::min(inverseLo_[a], inverse);
+        inverseHi_[a] = std::max(inverseHi_[a], inverse);
+      }
+    }
   }
 
   // The children some ray of the packet may enter, as bits: a child whose box no ray in the
@@ -177,11 +206,12 @@ class RayPacket {
 
   // Lane i walks the subtree alone, with its own closest-hit state.
   void single(int i, std::uint32_t ref) {
-    if (ray_[i].finiteInverse) {
-      RayCore<Closest, true> core(mesh_, ray_[i], hits_[i]);
+    const detail::TraversalRay ray = detail::traversalRay(rays_, index_[i]);
+    if (ray.finiteInverse) {
+      RayCore<Closest, true> core(mesh_, ray, hits_[i]);
       traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
     } else {
-      RayCore<Closest, false> core(mesh_, ray_[i], hits_[i]);
+      RayCore<Closest, false> core(mesh_, ray, hits_[i]);
       traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
     }
     bound_[i] = hits_[i].bound();
@@ -214,9 +244,14 @@ class RayPacket {
           origin[a] = hn::Load(d, origin_[a] + h), inverse[a] = hn::Load(d, inverse_[a] + h);
         // The near face by the sign bit of the direction (that of its inverse, -0 giving -inf),
         // per lane, as RayCore picks it per ray.
+        // A packet in one octant (cull_) has the same faces in every lane.
         auto faces = [&](int a, hn::Vec<D>& nearFace, hn::Vec<D>& farFace) {
-          const auto negative = hn::Lt(inverse[a], zero);
           const auto boxLo = hn::Set(d, lo[a][k]), boxHi = hn::Set(d, hi[a][k]);
+          if (cull_) {
+            nearFace = negative_[a] ? boxHi : boxLo, farFace = negative_[a] ? boxLo : boxHi;
+            return;
+          }
+          const auto negative = hn::Lt(inverse[a], zero);
           nearFace = hn::IfThenElse(negative, boxHi, boxLo);
           farFace = hn::IfThenElse(negative, boxLo, boxHi);
         };
@@ -290,10 +325,9 @@ class RayPacket {
   }
 
   const MeshView& mesh_;
+  const RaysView& rays_;
   const std::uint32_t* index_;
-  // Per lane: the ray as the single-ray traversal takes it, its closest-hit state, and SoA copies
-  // of what the packet tests read.
-  detail::TraversalRay ray_[N];
+  // Per lane: its closest-hit state, and what the packet tests read.
   Closest hits_[N];
   alignas(64) float bound_[N];
   alignas(64) float origin_[3][N];
