@@ -158,6 +158,67 @@ TEST(HullShape, BadPointsAreRefused) {
   expectError([&] { HullShape{ball}; }, "the hull's vertex count");
 }
 
+// Hard point sets: a grid (many coplanar and collinear points), a sphere's points jittered by a
+// float's rounding, duplicates, a thin slab just thicker than the flatness tolerance. Each either
+// makes a proper hull, or is refused with an Error: convex (every vertex behind every face's
+// plane, within 2e-5 of the points' extent: the hull's merging tolerance of 1e-5 and the float
+// rounding of the re-expressed vertices), every face of at least 3 corners, Euler's
+// V - E + F = 2, every input point behind every face's plane within the same 2e-5 (a point that
+// near adds no vertex, and merging moves a face by at most that), and a volume no larger than
+// the points' box.
+TEST(HullShape, HardPointSetsMakeProperHullsOrAreRefused) {
+  Random r(21);
+  int built = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::vector<Vec3f> pts;
+    const int kind = trial % 4;
+    if (kind == 0) {  // a 4 x 4 x 4 grid, shuffled by the order of generation
+      for (int i = 0; i < 64; ++i) pts.push_back({float(i % 4), float(i / 4 % 4), float(i / 16)});
+    } else if (kind == 1) {  // a sphere, jittered by a few ulps
+      for (int i = 0; i < 100; ++i) {
+        Vec3f v = Vec3f(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)).normalized();
+        pts.push_back(v + Vec3f::Constant(r.uniform(-1e-7f, 1e-7f)));
+      }
+    } else if (kind == 2) {  // a few points, each repeated
+      for (int i = 0; i < 6; ++i) {
+        const Vec3f v(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
+        for (int k = 0; k < 3; ++k) pts.push_back(v);
+      }
+    } else {  // a slab of thickness 2e-5 to 1e-3 of its width
+      const float thick = r.uniform(2e-5f, 1e-3f);
+      for (int i = 0; i < 30; ++i)
+        pts.push_back({r.uniform(-1, 1), r.uniform(0, thick), r.uniform(-1, 1)});
+    }
+    SCOPED_TRACE(trial);
+    try {
+      const HullShape s(pts);
+      ++built;
+      Vec3f lo = pts[0], hi = pts[0];
+      for (const Vec3f& p : pts) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      const float extent = (hi - lo).maxCoeff();
+      std::size_t edges = 0;
+      for (int f = 0; f < s.faceCount(); ++f) {
+        const auto face = s.face(f);
+        ASSERT_GE(face.size(), 3u);
+        edges += face.size();
+        for (const Vec3f& v : s.vertices())
+          EXPECT_LE(s.faceNormal(f).dot(v) - s.faceOffset(f), 2e-5f * extent) << "face " << f;
+      }
+      EXPECT_EQ(int(s.vertices().size()) - int(edges / 2) + s.faceCount(), 2);
+      for (const Vec3f& p : pts) {
+        const Vec3f local = s.rotation().conjugate() * (p - s.centre());
+        for (int f = 0; f < s.faceCount(); ++f)
+          EXPECT_LE(s.faceNormal(f).dot(local) - s.faceOffset(f), 2e-5f * extent) << kind;
+      }
+      EXPECT_LE(s.volume(), (hi - lo).prod() * (1 + 1e-5f));
+      EXPECT_GT(s.volume(), 0);
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("HullShape"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(built, 60);  // every set here is a solid (measured: none refused)
+}
+
 // A hull of a box's corners collides as the box: box-box's normal, depth and points, on random
 // overlapping and nearly touching pairs (the hull's faces are the box's, so the clipping is the
 // same; the normal comes from EPA rather than the separating axis test).

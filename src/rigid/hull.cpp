@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -35,7 +36,8 @@ Triangle triangle(const std::vector<Vec3d>& p, int a, int b, int c) {
 
 // The hull's triangles, outward, by adding one point at a time to a first tetrahedron: the faces
 // a point sees go, and the edges between seen and unseen faces (the horizon) are joined to it.
-// A point within `eps` of the hull adds nothing, so near-coplanar points never make slivers.
+// `eps`: how far from a line or plane the first tetrahedron's corners must be (else the points are
+// flat).
 std::vector<Triangle> hullTriangles(const std::vector<Vec3d>& p, double eps,
                                     const std::string& where) {
   const std::size_t n = p.size();
@@ -64,24 +66,42 @@ std::vector<Triangle> hullTriangles(const std::vector<Vec3d>& p, double eps,
   else
     tris = {triangle(p, a, c, b), triangle(p, a, b, d), triangle(p, b, c, d), triangle(p, c, a, d)};
 
+  // Farthest point first (as quickhull takes them). A point within a tenth of eps of the hull
+  // (float input's rounding is a hundredth of that) adds nothing: it stays that near as the hull
+  // grows, and is dropped from the candidates. Near-coplanar faces are merged afterwards.
+  const double rounding = 0.1 * eps;
+  std::vector<std::size_t> outside(n);
+  for (std::size_t i = 0; i < n; ++i) outside[i] = i;
   std::vector<std::pair<int, int>> seenEdges;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (;;) {
+    std::size_t best = n;
+    double farthest = rounding;
+    std::erase_if(outside, [&](std::size_t i) {
+      double d = -std::numeric_limits<double>::infinity();
+      for (const Triangle& t : tris) d = std::max(d, t.n.dot(p[i]) - t.d);
+      if (d > farthest) farthest = d, best = i;
+      return !(d > rounding);
+    });
+    if (best == n) break;
     seenEdges.clear();
     for (Triangle& t : tris)
-      if (t.alive && t.n.dot(p[i]) - t.d > eps) {
+      if (t.n.dot(p[best]) - t.d > 1e-9 * eps) {  // every face it sees, however little
         t.alive = false;
         for (int k = 0; k < 3; ++k) seenEdges.emplace_back(t.v[k], t.v[(k + 1) % 3]);
       }
     for (const auto& [u, v] : seenEdges)
       if (std::find(seenEdges.begin(), seenEdges.end(), std::pair(v, u)) == seenEdges.end())
-        tris.push_back(triangle(p, u, v, int(i)));
+        tris.push_back(triangle(p, u, v, int(best)));
     std::erase_if(tris, [](const Triangle& t) { return !t.alive; });
+    if (tris.size() > 4 * std::size_t(HullShape::kMaxVertices))
+      throw Error(where + ": the hull's vertex count is above 256");
   }
   return tris;
 }
 
 // The boundary of a set of triangles making one planar convex polygon, counter-clockwise around
-// the normal, without the vertices that lie on a straight run of it.
+// the normal, without the vertices that lie on a straight run of it; empty if the boundary is not
+// one simple loop (slivers of a thin shape can pinch it), and the triangles then stay faces.
 std::vector<int> boundary(const std::vector<Triangle>& tris, const std::vector<int>& group,
                           const std::vector<Vec3d>& p, double eps) {
   std::vector<std::pair<int, int>> edges;
@@ -89,21 +109,28 @@ std::vector<int> boundary(const std::vector<Triangle>& tris, const std::vector<i
     for (int k = 0; k < 3; ++k)
       edges.emplace_back(tris[std::size_t(t)].v[k], tris[std::size_t(t)].v[(k + 1) % 3]);
   std::map<int, int> next;  // the boundary: the edges whose reverse is not in the group
+  std::size_t boundaryEdges = 0;
   for (const auto& [u, v] : edges)
-    if (std::find(edges.begin(), edges.end(), std::pair(v, u)) == edges.end()) next[u] = v;
+    if (std::find(edges.begin(), edges.end(), std::pair(v, u)) == edges.end())
+      next[u] = v, ++boundaryEdges;
+  if (next.size() != boundaryEdges) return {};
   std::vector<int> loop{next.begin()->first};
   while (int(loop.size()) <= int(next.size())) {
     const auto it = next.find(loop.back());
     if (it == next.end() || it->second == loop.front()) break;
     loop.push_back(it->second);
   }
+  if (loop.size() != boundaryEdges) return {};
   std::vector<int> out;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     const Vec3d& prev = p[std::size_t(loop[(k + loop.size() - 1) % loop.size()])];
     const Vec3d& here = p[std::size_t(loop[k])];
     const Vec3d& after = p[std::size_t(loop[(k + 1) % loop.size()])];
-    if ((here - prev).cross(after - prev).norm() > eps * (after - prev).norm())
-      out.push_back(loop[k]);
+    // Dropped only where it lies on the segment between its neighbours (within eps of it).
+    const Vec3d run = after - prev;
+    const double along = (here - prev).dot(run);
+    const bool between = along >= 0 && along <= run.squaredNorm();
+    if (!between || (here - prev).cross(run).norm() > eps * run.norm()) out.push_back(loop[k]);
   }
   return out;
 }
@@ -128,6 +155,18 @@ HullShape::HullShape(std::span<const Vec3f> points, const std::string& where) {
   // Float input is rounded at 6e-8 of its magnitude: well above that is a real feature.
   const double eps = 1e-5 * (hi - lo).maxCoeff();
   const std::vector<Triangle> tris = hullTriangles(p, eps, where);
+  // Near-degenerate input (points almost collinear with an edge) can leave a sliver whose normal
+  // is rounding: then some point lies outside a face, and the hull is refused, not kept wrong.
+  const auto refuse = [&](const char* what) {
+    throw Error(where + ": the points make no proper solid (" + what + ", within rounding)");
+  };
+  std::vector<int> corners;
+  for (const Triangle& t : tris) corners.insert(corners.end(), std::begin(t.v), std::end(t.v));
+  for (const Triangle& t : tris) {
+    if (!t.n.allFinite()) refuse("a face has no normal");
+    for (const int v : corners)
+      if (t.n.dot(p[std::size_t(v)]) - t.d > eps) refuse("a corner lies outside a face");
+  }
 
   // Faces: triangles joined across edges while every vertex stays within eps of the first's plane.
   std::vector<int> faceOf(tris.size(), -1);
@@ -148,7 +187,13 @@ HullShape::HullShape(std::span<const Vec3f> points, const std::string& where) {
         });
         if (shared == 2 && flat) group.push_back(int(t)), faceOf[t] = faceOf[s];
       }
-    polygons.push_back(boundary(tris, group, p, eps));
+    std::vector<int> polygon = boundary(tris, group, p, eps);
+    if (polygon.empty())
+      for (const int t : group)
+        polygons.push_back({tris[std::size_t(t)].v, tris[std::size_t(t)].v + 3});
+    else
+      polygons.push_back(std::move(polygon));
+    if (polygons.back().size() < 3) refuse("a face has fewer than 3 corners");
   }
 
   // The vertices the faces use, renumbered in order of first use.
@@ -191,7 +236,9 @@ HullShape::HullShape(std::span<const Vec3f> points, const std::string& where) {
   const Vec3d c = moment / volume;  // from `inside`
   second -= volume * c * c.transpose();
   const Mat3d inertia = (second.trace() * Mat3d::Identity() - second) / volume;
+  if (!(volume > 0) || !inertia.allFinite()) refuse("no volume");
   const Eigen::SelfAdjointEigenSolver<Mat3d> principal(inertia);
+  if (!(principal.eigenvalues().minCoeff() > 0)) refuse("no volume");
   Mat3d R = principal.eigenvectors();
   if (R.determinant() < 0) R.col(2) = -R.col(2);
 
