@@ -7,15 +7,6 @@
 #include "simdphys/batch.hpp"
 
 namespace simdphys::cli {
-namespace {
-
-struct BatchOptions {
-  std::string file, json;
-  int threads = 0;
-};
-
-}  // namespace
-
 void printBatch(std::span<const BatchResult> results) {
   std::printf("%5s %7s %10s %18s  %s\n", "job", "frames", "seconds", "state hash", "measures");
   for (const BatchResult& r : results) {
@@ -39,25 +30,11 @@ void writeReport(std::span<const BatchResult> results, const std::string& file) 
   if (!out) throw Error(file + ": cannot be written");
 }
 
-void addBatch(CLI::App& app) {
-  auto o = std::make_shared<BatchOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "batch", "Run a batch file's jobs (scenes, sweeps) on this machine's cores");
-  cmd->add_option("file", o->file, "The batch file (JSON, docs/batch.md)")->required();
-  cmd->add_option("--threads", o->threads, "Jobs at a time, 0 for OpenMP's default")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--json", o->json, "Also write the results to this JSON file");
-  cmd->footer(
-      "Examples:\n"
-      "  simdphys batch scenes/batches/sweep.json --threads 2 --json results.json\n"
-      "  mpirun -n 4 simdphys-batch-mpi scenes/batches/sweep.json --json results.json   (across "
-      "processes)");
-  cmd->callback([o] {
-    const std::vector<BatchJob> jobs = loadBatch(o->file);
-    const std::vector<BatchResult> results = runBatch(jobs, o->threads);
-    printBatch(results);
-    if (!o->json.empty()) writeReport(results, o->json);
-  });
+void batch(const BatchOptions& o) {
+  const std::vector<BatchJob> jobs = loadBatch(o.file);
+  const std::vector<BatchResult> results = runBatch(jobs, o.threads);
+  printBatch(results);
+  if (!o.json.empty()) writeReport(results, o.json);
 }
 
 }  // namespace simdphys::cli

@@ -3,6 +3,7 @@
 // prints them in job order and writes the report. Every rank reads the batch file and the scenes
 // itself, so on a cluster they must be on a shared file system (docs/batch.md).
 #include <mpi.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <string>

@@ -9,15 +9,6 @@
 #include "session.hpp"
 
 namespace simdphys::cli {
-namespace {
-
-struct BenchOptions {
-  std::string scene;
-  Overrides overrides;
-  int warmup = 5;
-  std::vector<std::string> paths;
-};
-
 void bench(const BenchOptions& o) {
   const std::vector<std::string> paths = o.paths.empty() ? availablePaths() : o.paths;
   const std::string before = activePath();
@@ -49,26 +40,6 @@ void bench(const BenchOptions& o) {
     if (reference > 0 && r.ms > 0) std::snprintf(speedup, sizeof speedup, "%.2f", reference / r.ms);
     std::printf("%-12s %12.3f %14s  %s\n", r.path.c_str(), r.ms, speedup, r.measures.c_str());
   }
-}
-
-}  // namespace
-
-void addBench(CLI::App& app) {
-  auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "Time a scene file on every execution path");
-  cmd->add_option("scene", o->scene, "The scene file (JSON, docs/scenes.md)")->required();
-  cmd->add_option("--frames,-n", o->overrides.frames, "Frames a path (default: the scene's)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--warmup", o->warmup, "Frames stepped before the timing starts")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--threads", o->overrides.threads, "OpenMP threads, 0 for OpenMP's default")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--paths", o->paths, "Only these paths (default: every one this CPU has)");
-  cmd->footer(
-      "Examples:\n"
-      "  simdphys bench scenes/w5_pyramid_b10.json --frames 120\n"
-      "  simdphys bench scenes/w4_particles.json --paths reference avx2");
-  cmd->callback([o] { bench(*o); });
 }
 
 }  // namespace simdphys::cli

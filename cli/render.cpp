@@ -20,14 +20,6 @@
 namespace simdphys::cli {
 namespace {
 
-struct RenderOptions {
-  std::string scene, out = "frames", video;
-  Overrides overrides;
-  int every = 0;  // 0: about 60 pictures over the run
-  int width = 640, height = 360;
-  float particleRadius = 0.05f;
-};
-
 // What each model of the picture is, for its colour.
 enum class Kind { kObstacle, kGround, kBody, kCloth, kParticle };
 
@@ -189,6 +181,8 @@ void writePng(const std::string& file, const Picture& p, const Camera& camera, i
 
 bool haveFfmpeg() { return std::system("ffmpeg -version > /dev/null 2>&1") == 0; }
 
+}  // namespace
+
 void render(const RenderOptions& o) {
   Session s(o.scene, o.overrides);
   const int every = o.every > 0 ? o.every : std::max(1, s.frames() / 60);
@@ -228,40 +222,6 @@ void render(const RenderOptions& o) {
                           o.out + "/frame_%05d.png\" " + filter + " \"" + o.video + "\"";
   if (std::system(cmd.c_str()) != 0) throw Error("ffmpeg failed: " + cmd);
   std::printf("wrote %s\n", o.video.c_str());
-}
-
-}  // namespace
-
-void addRender(CLI::App& app) {
-  auto o = std::make_shared<RenderOptions>();
-  CLI::App* cmd = app.add_subcommand("render", "Step a scene file and ray cast its frames to PNG");
-  cmd->add_option("scene", o->scene, "The scene file (JSON, docs/scenes.md)")->required();
-  cmd->add_option("--frames,-n", o->overrides.frames, "Frames to step (default: the scene's)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--every", o->every,
-                  "A picture every this many frames (default: about 60 in all)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--out,-o", o->out, "Folder of the PNG frames")->capture_default_str();
-  cmd->add_option("--video", o->video,
-                  "Also join the frames into this .gif or .mp4 (needs ffmpeg)");
-  cmd->add_option("--width", o->width, "Picture width in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 8192));
-  cmd->add_option("--height", o->height, "Picture height in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 8192));
-  cmd->add_option("--particle-radius", o->particleRadius, "Radius particles are drawn with (m)")
-      ->capture_default_str()
-      ->check(CLI::Range(1e-4, 10.0));
-  cmd->add_option("--path", o->overrides.path,
-                  "Execution path (default: the scene's, else the best)");
-  cmd->add_option("--threads", o->overrides.threads, "OpenMP threads, 0 for OpenMP's default")
-      ->check(CLI::NonNegativeNumber);
-  cmd->footer(
-      "Examples:\n"
-      "  simdphys render scenes/w3_cloth.json --video cloth.gif\n"
-      "  simdphys render scenes/w5_pyramid_b10.json --frames 120 --every 10 --out pyramid");
-  cmd->callback([o] { render(*o); });
 }
 
 }  // namespace simdphys::cli

@@ -13,12 +13,6 @@
 namespace simdphys::cli {
 namespace {
 
-struct RunOptions {
-  std::string scene, json, save;
-  Overrides overrides;
-  bool progress = false, noProgress = false;
-};
-
 nlohmann::json toJson(const Session& s, const WorldMeasures& m) {
   nlohmann::json j;
   j["scene"] = s.file();
@@ -76,6 +70,8 @@ void printStages(const StageTotals& t) {
                 static_cast<unsigned long long>(t.sum.bounceLimited));
 }
 
+}  // namespace
+
 void run(const RunOptions& o) {
   Session s(o.scene, o.overrides);
   const SceneFile& scene = s.scene();
@@ -106,36 +102,6 @@ void run(const RunOptions& o) {
     out << toJson(s, m).dump(2) << "\n";
     if (!out) throw Error(o.json + ": cannot be written");
   }
-}
-
-}  // namespace
-
-void addRun(CLI::App& app) {
-  auto o = std::make_shared<RunOptions>();
-  CLI::App* cmd =
-      app.add_subcommand("run", "Step a scene file, then print its profile and measures");
-  cmd->add_option("scene", o->scene, "The scene file (JSON, docs/scenes.md)")->required();
-  cmd->add_option("--frames,-n", o->overrides.frames, "Frames to step (default: the scene's)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option(
-      "--path", o->overrides.path,
-      "Execution path: reference or a SIMD target (default: the scene's, else the best)");
-  cmd->add_option("--threads", o->overrides.threads, "OpenMP threads, 0 for OpenMP's default")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--json", o->json, "Also write the results to this JSON file");
-  cmd->add_option("--save", o->save, "Save the world at the end to this snapshot file");
-  cmd->add_option("--restore", o->overrides.restore,
-                  "Start from this snapshot (of the scene's world) instead of the scene's start");
-  cmd->add_flag("--progress", o->progress, "Draw the progress bar even when stderr is no terminal");
-  cmd->add_flag("--no-progress", o->noProgress, "Never draw the progress bar");
-  cmd->footer(
-      "Examples:\n"
-      "  simdphys run scenes/w5_pyramid_b10.json\n"
-      "  simdphys run scenes/w3_cloth.json --frames 60 --path reference\n"
-      "  simdphys run scenes/playground.json --threads 2 --json result.json\n"
-      "  simdphys run scenes/w3_cloth.json --frames 100 --save cloth.snap\n"
-      "  simdphys run scenes/w3_cloth.json --frames 200 --restore cloth.snap");
-  cmd->callback([o] { run(*o); });
 }
 
 }  // namespace simdphys::cli
