@@ -66,21 +66,21 @@ std::vector<Triangle> hullTriangles(const std::vector<Vec3d>& p, double eps,
   else
     tris = {triangle(p, a, c, b), triangle(p, a, b, d), triangle(p, b, c, d), triangle(p, c, a, d)};
 
-  // Farthest point first (as quickhull takes them). A point within a tenth of eps of the hull
-  // (float input's rounding is a hundredth of that) adds nothing: it stays that near as the hull
-  // grows, and is dropped from the candidates. Near-coplanar faces are merged afterwards.
-  const double rounding = 0.1 * eps;
+  // Farthest point first (as quickhull takes them). A point within a tenth of eps of every face's
+  // plane (float input's rounding is well below that) adds nothing: it stays that near as the
+  // hull grows, and is dropped from the candidates. Near-coplanar faces are merged afterwards.
+  const double nearEnough = 0.1 * eps;
   std::vector<std::size_t> outside(n);
   for (std::size_t i = 0; i < n; ++i) outside[i] = i;
   std::vector<std::pair<int, int>> seenEdges;
   for (;;) {
     std::size_t best = n;
-    double farthest = rounding;
+    double most = nearEnough;
     std::erase_if(outside, [&](std::size_t i) {
-      double d = -std::numeric_limits<double>::infinity();
-      for (const Triangle& t : tris) d = std::max(d, t.n.dot(p[i]) - t.d);
-      if (d > farthest) farthest = d, best = i;
-      return !(d > rounding);
+      double out = -std::numeric_limits<double>::infinity();
+      for (const Triangle& t : tris) out = std::max(out, t.n.dot(p[i]) - t.d);
+      if (out > most) most = out, best = i;
+      return !(out > nearEnough);
     });
     if (best == n) break;
     seenEdges.clear();
@@ -156,7 +156,7 @@ HullShape::HullShape(std::span<const Vec3f> points, const std::string& where) {
   const double eps = 1e-5 * (hi - lo).maxCoeff();
   const std::vector<Triangle> tris = hullTriangles(p, eps, where);
   // Near-degenerate input (points almost collinear with an edge) can leave a sliver whose normal
-  // is rounding: then some point lies outside a face, and the hull is refused, not kept wrong.
+  // is rounding: then some corner lies outside a face, and the hull is refused, not kept wrong.
   const auto refuse = [&](const char* what) {
     throw Error(where + ": the points make no proper solid (" + what + ", within rounding)");
   };
@@ -169,15 +169,15 @@ HullShape::HullShape(std::span<const Vec3f> points, const std::string& where) {
   }
 
   // Faces: triangles joined across edges while every vertex stays within eps of the first's plane.
-  std::vector<int> faceOf(tris.size(), -1);
+  std::vector<bool> grouped(tris.size(), false);
   std::vector<std::vector<int>> polygons;
   for (std::size_t s = 0; s < tris.size(); ++s) {
-    if (faceOf[s] >= 0) continue;
+    if (grouped[s]) continue;
     std::vector<int> group{int(s)};
-    faceOf[s] = int(polygons.size());
+    grouped[s] = true;
     for (std::size_t g = 0; g < group.size(); ++g)
       for (std::size_t t = 0; t < tris.size(); ++t) {
-        if (faceOf[t] >= 0 || tris[t].n.dot(tris[s].n) < 0.5) continue;
+        if (grouped[t] || tris[t].n.dot(tris[s].n) < 0.5) continue;
         const Triangle& u = tris[std::size_t(group[g])];
         int shared = 0;
         for (int j = 0; j < 3; ++j)
@@ -185,7 +185,7 @@ HullShape::HullShape(std::span<const Vec3f> points, const std::string& where) {
         const bool flat = std::all_of(std::begin(tris[t].v), std::end(tris[t].v), [&](int v) {
           return std::abs(tris[s].n.dot(p[std::size_t(v)]) - tris[s].d) <= eps;
         });
-        if (shared == 2 && flat) group.push_back(int(t)), faceOf[t] = faceOf[s];
+        if (shared == 2 && flat) group.push_back(int(t)), grouped[t] = true;
       }
     std::vector<int> polygon = boundary(tris, group, p, eps);
     if (polygon.empty())

@@ -108,15 +108,18 @@ struct PlacedHullT {
   Mat3<T> axes;
 };
 
-// Hulls, the general convex case (src/reference/rigid/hull-inl.hpp): GJK gives the normal of
-// shapes apart within maxSeparation, EPA of overlapping ones; then the two faces most facing each
-// other along it (a hull's, a box's, the triangle) are clipped as box-box clips, the one more
-// nearly square to the normal the reference, and the points within maxSeparation kept, at most
-// four as box-box keeps them; GJK's or EPA's single point where none is. A face square to the
-// normal within 0.8 degrees gives the normal. Against a triangle, an inactive edge never gives
-// the normal (as for boxes): the triangle's face does, with the hull's deepest vertex along it.
-// Against a plane: the vertices within maxSeparation, four kept. Ids name the two faces and the
-// clipped polygon's edges (below 1024 against a triangle).
+// Hulls, the general convex case (src/reference/rigid/hull-inl.hpp): GJK finds the nearest
+// features of shapes apart within maxSeparation, EPA of overlapping ones; then the separating
+// axis test over both shapes' faces (a hull's, a box's, the triangle's two sides), with box-box's
+// rule and tolerances: B's face over A's, and either over the edge contact GJK or EPA found, only
+// when clearly better. The other shape's face most against the chosen one is clipped against its
+// sides as box-box clips, duplicates kept once, the points within maxSeparation kept, at most
+// four as box-box keeps them. An edge or vertex contact is GJK's or EPA's single point; apart
+// shapes whose face clips to nothing have no contact (as box-box has none there). Against a
+// triangle, an inactive edge never gives the normal (as for boxes): the triangle's face does,
+// with the hull's deepest vertex along it. Against a plane: the vertices within maxSeparation,
+// four kept. Ids name the two faces and the clipped polygon's edges (below 1024 against a
+// triangle).
 template <class T>
 ManifoldT<T> collide(const PlacedHullT<T>& a, const SphereT<T>& b, T maxSeparation);
 template <class T>

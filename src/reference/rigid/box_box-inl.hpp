@@ -174,10 +174,7 @@ ManifoldT<T> collide(const ObbT<T>& a, const ObbT<T>& b, T maxSeparation) {
       found[std::size_t(count++)] = {Vec3<T>(a.center + x.p - T(0.5) * s * n), s,
                                      faces * 64 + x.in * 8 + x.out};
   }
-  std::array<int, 4> keep{};
-  m.count = keepFour(found, count, n, keep);
-  for (int c = 0; c < m.count; ++c)
-    m.points[std::size_t(c)] = found[std::size_t(keep[std::size_t(c)])];
+  keepFourOf(m, found, count);
   return m;
 }
 

@@ -92,4 +92,12 @@ int keepFour(const std::array<ContactPointT<T>, N>& c, int n, const Vec3<T>& nor
   return 4;
 }
 
+// The manifold's points: at most four of the n in c (keepFour's), along its normal.
+template <class T, std::size_t N>
+void keepFourOf(ManifoldT<T>& m, const std::array<ContactPointT<T>, N>& c, int n) {
+  std::array<int, 4> keep{};
+  m.count = keepFour(c, n, m.normal, keep);
+  for (int j = 0; j < m.count; ++j) m.points[std::size_t(j)] = c[std::size_t(keep[std::size_t(j)])];
+}
+
 }  // namespace simdphys::detail

@@ -1,7 +1,8 @@
 // Manifolds of convex hulls (rigid/hull.hpp) against every shape of the rigid bodies: GJK (apart,
-// within the speculative distance) or EPA (overlapping) finds the normal, then the two shapes'
-// faces most facing each other along it are clipped as box-box clips its faces (Jolt's
-// ManifoldBetweenTwoFaces); where no face point is near enough, GJK's or EPA's single point.
+// within the speculative distance) or EPA (overlapping) finds the nearest features, the separating
+// axis test over both shapes' faces chooses a face as box-box chooses its axis, and the other
+// shape's face is clipped against it as box-box clips (Jolt's ManifoldBetweenTwoFaces); an edge or
+// vertex contact is GJK's or EPA's single point.
 #pragma once
 
 #include <algorithm>
@@ -40,7 +41,7 @@ struct WorldHull {
   ConvexHullT<T> view() const { return {std::span<const Vec3<T>>(v.data(), std::size_t(n))}; }
 };
 
-// The face of each shape whose outward normal is nearest `d`.
+// The face of each shape whose outward normal is nearest `d` (a triangle's side facing it).
 template <class T>
 Face<T> faceToward(const PlacedHullT<T>& h, const Vec3<T>& d) {
   const HullShape& s = *h.shape;
@@ -175,10 +176,8 @@ std::optional<Nearest<T>> nearest(const A& a, const B& b, T maxSeparation) {
 }
 
 // The manifold of a hull A (its world vertices `worldA`) against a polytope B (a hull, its world
-// vertices `shapeB`; a box; a triangle) nearest as `near` says. As box-box chooses its axis: a face
-// of A or of B whose separating axis separates within the tolerances of box-box of the least
-// (EPA's or GJK's), A's preferred, gives the normal and is clipped against; else the contact is
-// of edges or vertices, and `near`'s single point it. `forceB`: B's face regardless.
+// vertices `shapeB`; a box; a triangle) nearest as `near` says. `forceB`: B's face facing A along
+// near.n is the reference, whatever the faces' separations (a mesh's inactive edge).
 template <class T, class B, class SB>
 ManifoldT<T> faceContact(const PlacedHullT<T>& a, const ConvexHullT<T>& worldA, const B& b,
                          const SB& shapeB, const Nearest<T>& near, T maxSeparation, T size,
@@ -195,36 +194,31 @@ ManifoldT<T> faceContact(const PlacedHullT<T>& a, const ConvexHullT<T>& worldA, 
                    kBoxAxisAbsoluteTolerance<T> * size;
   };
   const bool faceOfB = forceB || clearlyAbove(sepB, sepA);
-  const T sepFace = faceOfB ? sepB : sepA;
-  const bool useA = !faceOfB && !clearlyAbove(near.separation, sepFace);
-  const bool useB = forceB || (faceOfB && !clearlyAbove(near.separation, sepFace));
-  const Face<T> fa = faceToward(a, normalA);
-  const Face<T> fb = faceToward(b, forceB ? Vec3<T>(-near.n) : normalB);
+  const bool edge = !forceB && clearlyAbove(near.separation, faceOfB ? sepB : sepA);
   std::array<ContactPointT<T>, 2 * HullShape::kMaxFaceVertices> points;
   const T snap = kBoxClipSnap<T> * size;
   int n = 0;
-  if (useA) {
-    m.normal = fa.normal;
-    n = clipFaces(fa, faceToward(b, Vec3<T>(-fa.normal)), false, maxSeparation, snap, small,
-                  points);
-  } else if (useB) {
-    m.normal = -fb.normal;
-    n = clipFaces(fb, faceToward(a, Vec3<T>(-fb.normal)), true, maxSeparation, snap, small, points);
+  if (!edge) {
+    // The reference face, and the other shape's face most against it, clipped.
+    const Face<T> ref =
+        faceOfB ? faceToward(b, forceB ? Vec3<T>(-near.n) : normalB) : faceToward(a, normalA);
+    const Face<T> inc =
+        faceOfB ? faceToward(a, Vec3<T>(-ref.normal)) : faceToward(b, Vec3<T>(-ref.normal));
+    m.normal = faceOfB ? Vec3<T>(-ref.normal) : ref.normal;
+    n = clipFaces(ref, inc, faceOfB, maxSeparation, snap, small, points);
+    // Apart, with a face as the contact's axis but no point of the other face over it: no
+    // speculative contact, as box-box finds none there. GJK's single point would do, but its
+    // normal is then ill-defined (edges barely apart: any of a range of directions), and a
+    // normal that turns from step to step carries warm-started friction sideways: a W5 pyramid
+    // of hull cubes crept 0.5 m in 10 s with it, and holds to 5 mm without.
+    if (n == 0 && near.separation > 0) return {};
   }
-  // Apart, with a face as the contact's axis but no point of the other face over it: no
-  // speculative contact, as box-box finds none there. GJK's single point would do, but its
-  // normal is then ill-defined (edges barely apart: any of a range of directions), and a normal
-  // that turns from step to step carries warm-started friction sideways: a W5 pyramid of hull
-  // cubes crept 0.5 m in 10 s with it, and holds to 5 mm without.
-  if (n == 0 && (useA || useB) && near.separation > 0) return {};
-  if (n == 0) {  // GJK's or EPA's point, along its own normal
+  if (n == 0) {  // an edge or vertex contact: GJK's or EPA's point, along its own normal
     m.normal = near.n;
     addContact(m, near.onA, near.separation, small ? 1023u : 0xFFFFu, maxSeparation);
     return m;
   }
-  std::array<int, 4> keep{};
-  m.count = keepFour(points, n, m.normal, keep);
-  for (int j = 0; j < m.count; ++j) m.points[std::size_t(j)] = points[std::size_t(keep[j])];
+  keepFourOf(m, points, n);
   return m;
 }
 
@@ -276,9 +270,7 @@ ManifoldT<T> collide(const PlacedHullT<T>& a, const PlaneT<T>& b, T maxSeparatio
       points[std::size_t(n++)] = {Vec3<T>(a.center + offset - T(0.5) * s * b.normal), s,
                                   std::uint32_t(v)};
   }
-  std::array<int, 4> keep{};
-  m.count = detail::keepFour(points, n, m.normal, keep);
-  for (int j = 0; j < m.count; ++j) m.points[std::size_t(j)] = points[std::size_t(keep[j])];
+  detail::keepFourOf(m, points, n);
   return m;
 }
 

@@ -123,11 +123,9 @@ void collideMesh(const BodyT<T>& body, const MeshBvh& mesh, const Aabb& box, T m
     }
   }
   for (Group& g : groups) {
-    std::array<int, 4> keep{};
     ManifoldT<T> m;
     m.normal = g.normal;
-    m.count = keepFour(g.points, g.n, m.normal, keep);
-    for (int j = 0; j < m.count; ++j) m.points[std::size_t(j)] = g.points[std::size_t(keep[j])];
+    keepFourOf(m, g.points, g.n);
     emit(m, g.sub);
   }
 }

@@ -154,10 +154,7 @@ ManifoldT<T> collide(const ObbT<T>& a, const TriangleT<T>& b, T maxSeparation,
                                        refFace * 64 + x.in * 8 + x.out};
     }
   }
-  std::array<int, 4> keep{};
-  m.count = keepFour(found, count, m.normal, keep);
-  for (int c = 0; c < m.count; ++c)
-    m.points[std::size_t(c)] = found[std::size_t(keep[std::size_t(c)])];
+  keepFourOf(m, found, count);
   return m;
 }
 
