@@ -52,13 +52,13 @@ struct LaneBodies {
              inertia[1] * x[0] + (inertia[3] * x[1] + inertia[4] * x[2]),
              inertia[2] * x[0] + (inertia[4] * x[1] + inertia[5] * x[2])}};
   }
-  // dq * r - r: where the anchor r has turned to since the step's start.
-  Vec3L<V> turned(const Vec3L<V>& r) const {
-    // Rotating by a unit quaternion: r + 2 q x (q x r + w r).
-    const Vec3L<V> q{{dq[0], dq[1], dq[2]}};
-    const Vec3L<V> t = cross<D>(q, r) + r * dq[3];
-    const Vec3L<V> u = cross<D>(q, t);
-    return u + u;
+  // dq^-1 n - n: the normal turned back by the body's turn since the step's start (the
+  // reference's Separation: Eigen's q * v, v + w 2 (q x v) + q x 2 (q x v), with q conjugated).
+  Vec3L<V> turnedBack(const Vec3L<V>& n) const {
+    const Vec3L<V> q{{Neg(dq[0]), Neg(dq[1]), Neg(dq[2])}};
+    Vec3L<V> uv = cross<D>(q, n);
+    uv = uv + uv;
+    return ((n + uv * dq[3]) + cross<D>(q, uv)) - n;
   }
 };
 
@@ -189,19 +189,21 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
       }
       const V squared = total[0] * total[0] + total[1] * total[1];
       const auto over = Gt(squared, limit * limit);  // then squared > 0
-      const V scale = limit / Sqrt(IfThenElse(over, squared, Set(d, 1.0f)));
-      for (std::size_t i = 0; i < 2; ++i) {
-        total[i] = IfThenElse(over, total[i] * scale, total[i]);
-        Store(total[i], d, r[p + R::tangent1 + i]);
+      if (!AllFalse(d, over)) {  // a resting pile's points mostly stick: no root, no division
+        const V scale = limit / Sqrt(IfThenElse(over, squared, one));
+        for (std::size_t i = 0; i < 2; ++i) total[i] = IfThenElse(over, total[i] * scale, total[i]);
       }
+      for (std::size_t i = 0; i < 2; ++i) Store(total[i], d, r[p + R::tangent1 + i]);
       applyImpulse(a, b, rA, rB, t[0] * (total[0] - old[0]) + t[1] * (total[1] - old[1]));
     }
+    // The reference's Separation: a point's n.(dq r - r) as (dq^-1 n - n).r.
+    const Vec3L<V> nA = a.turnedBack(n), nB = b.turnedBack(n);
+    const V along = dot(b.dp - a.dp, n);
     for (std::size_t j = 0; j < 4; ++j) {
       const std::size_t k = pass.reverse ? 3 - j : j;
       const std::size_t p = R::kPoint + k * R::kPointFields;
       const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
-      const Vec3L<V> moved = (b.dp + b.turned(rB)) - (a.dp + a.turned(rA));
-      const V sep = Load(d, r[p + R::base]) + dot(moved, n);
+      const V sep = Load(d, r[p + R::base]) + (along + (dot(nB, rB) - dot(nA, rA)));
       V bias = zero, ms = one, is = zero;
       if (pass.bias == core::ContactPass::kSoft) {
         bias = Max(biasRate * sep, minPush), ms = massScale, is = impulseScale;

@@ -80,13 +80,19 @@ void warmStart(std::vector<ContactConstraintT<T>>& contacts, std::vector<SolverB
     }
 }
 
-// The separation of a point now, from the bodies' motion since the step's start.
+// The separations of a contact's points now, from the bodies' motion since the step's start.
+// A point's anchor r has turned to dq r, and n.(dq r - r) = (dq^-1 n - n).r: the normal is turned
+// back once a contact rather than each anchor once a point (the kernels' order of operations).
 template <class T>
-T currentSeparation(const SolverBodyT<T>& a, const SolverBodyT<T>& b,
-                    const ContactPointConstraintT<T>& p, const Vec3<T>& n) {
-  const Vec3<T> d = (b.dp + b.dq * p.rB - p.rB) - (a.dp + a.dq * p.rA - p.rA);
-  return p.baseSeparation + d.dot(n);
-}
+struct Separation {
+  Vec3<T> nA, nB;  // dq^-1 n - n of each body
+  T along;         // n.(dpB - dpA)
+  Separation(const SolverBodyT<T>& a, const SolverBodyT<T>& b, const Vec3<T>& n)
+      : nA(a.dq.conjugate() * n - n), nB(b.dq.conjugate() * n - n), along((b.dp - a.dp).dot(n)) {}
+  T operator()(const ContactPointConstraintT<T>& p) const {
+    return p.baseSeparation + (along + (nB.dot(p.rB) - nA.dot(p.rA)));
+  }
+};
 
 // One pass over the contacts: friction, then normal impulses (biased by the model when useBias),
 // Jolt's order: the non-penetration impulses come last, so they hold what friction disturbs. On
@@ -118,9 +124,10 @@ void solveContacts(std::vector<ContactConstraintT<T>>& contacts,
       p.tangentImpulse[0] = total[0], p.tangentImpulse[1] = total[1];
       applyImpulse(a, b, p.rA, p.rB, impulse);
     }
+    const Separation<T> separation(a, b, c.normal);
     for (int k = 0; k < c.count; ++k) {
       ContactPointConstraintT<T>& p = c.points[std::size_t(reverse ? c.count - 1 - k : k)];
-      const T sep = currentSeparation(a, b, p, c.normal);
+      const T sep = separation(p);
       T bias = 0, massScale = 1, impulseScale = 0;
       if (sep > 0) {
         bias = sep * s.invH;  // speculative: close the gap within the substep, no further
@@ -176,9 +183,9 @@ void projectPositions(const std::vector<ContactConstraintT<T>>& contacts,
     SolverBodyT<T>&a = bodies[c.a], &b = bodies[c.b];
     const T mass = a.invMass + b.invMass;
     if (mass == 0) continue;
+    const Separation<T> separation(a, b, c.normal);
     T sep = 0;
-    for (int i = 0; i < c.count; ++i)
-      sep = std::min(sep, currentSeparation(a, b, c.points[std::size_t(i)], c.normal));
+    for (int i = 0; i < c.count; ++i) sep = std::min(sep, separation(c.points[std::size_t(i)]));
     const T push = fraction * std::max(-sep - slop, T(0)) / mass;
     a.dp -= push * a.invMass * c.normal;
     b.dp += push * b.invMass * c.normal;
