@@ -1,6 +1,7 @@
 // The rigid bodies' step (src/rigid/step.hpp): the streams to the reference's bodies and back.
 #include "src/rigid/step.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "src/core/on_path.hpp"
@@ -92,7 +93,12 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt, 
                       kernelPasses(state.size()));
   // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
   for (std::size_t i = 0; i < state.size(); ++i) {
-    const std::string body = where + ": body " + std::to_string(i);
+    const auto inRange = [](const Vec3f& x) {
+      return inSupportedRange(std::abs(double(x.x()))) &&
+             inSupportedRange(std::abs(double(x.y()))) && inSupportedRange(std::abs(double(x.z())));
+    };
+    if (inRange(state[i].x) && inRange(state[i].v) && inRange(state[i].w)) continue;
+    const std::string body = where + ": body " + std::to_string(i);  // built for the message only
     requireFiniteField(state[i].x, body, "position after the step");
     requireFiniteField(state[i].v, body, "velocity after the step");
     requireFiniteField(state[i].w, body, "angular velocity after the step");
