@@ -26,23 +26,38 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
     batchBegin_.push_back(batchBegin_.back() + std::uint32_t(paddedSize(last - first)));
   lanes_ = batchBegin_.back();
   static_assert(R::kBlockLanes == kStreamPad);
-  fields_.assign(R::kBlock * (lanes_ / R::kBlockLanes), 0.0f);
+  // The rows only grow: every field of every lane is written below, so nothing is cleared (a
+  // memset of megabytes a step).
+  const std::size_t size = R::kBlock * (lanes_ / R::kBlockLanes);
+  if (fields_.size() < size) fields_.resize(size);
   // Padding lanes join the static dummy to itself: no mass, no impulse, nothing moves.
   a_.assign(lanes_, dummy_), b_.assign(lanes_, dummy_);
+  constexpr std::uint32_t kPadding = ~0u;
+  std::vector<std::uint32_t> contactAt(lanes_, kPadding);
   laneOf_.resize(contacts.size());
   std::size_t batch = 0;
   for (const auto& [first, last] : ranges) {
-    for (std::uint32_t i = first; i < last; ++i)
+    for (std::uint32_t i = first; i < last; ++i) {
       laneOf_[order_[i]] = batchBegin_[batch] + (i - first);
+      contactAt[batchBegin_[batch] + (i - first)] = order_[i];
+    }
     ++batch;
   }
   const core::ContactRows r = rows();
   const auto at = [&](std::size_t field, std::size_t lane) -> float& {
     return r.lanes(lane)[field * R::kBlockLanes];
   };
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
+  // Lane after lane: a block's 16 lanes fill its lines while they are cached.
+  for (std::size_t lane = 0; lane < lanes_; ++lane) {
+    const std::uint32_t i = contactAt[lane];
+    const auto zero = [&](std::size_t from, std::size_t to) {
+      for (std::size_t f = from; f < to; ++f) at(f, lane) = 0.0f;
+    };
+    if (i == kPadding) {
+      zero(0, R::kFields);
+      continue;
+    }
     const ContactConstraintT<float>& c = contacts[i];
-    const std::size_t lane = laneOf_[i];
     a_[lane] = c.a, b_[lane] = c.b;
     for (int k = 0; k < 3; ++k) {
       at(R::nx + std::size_t(k), lane) = c.normal[k];
@@ -62,6 +77,8 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
       const float upper[6] = {I(0, 0), I(0, 1), I(0, 2), I(1, 1), I(1, 2), I(2, 2)};
       for (std::size_t k = 0; k < 6; ++k) at(inertia + k, lane) = upper[k];
     }
+    // The points past the count are inert: all zero.
+    zero(R::kPoint + std::size_t(c.count) * R::kPointFields, R::kFields);
     for (int j = 0; j < c.count; ++j) {
       const ContactPointConstraintT<float>& q = c.points[std::size_t(j)];
       const std::size_t o = R::kPoint + std::size_t(j) * R::kPointFields;
