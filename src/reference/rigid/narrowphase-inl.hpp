@@ -258,7 +258,9 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
   bounds.reserve(n);
   std::vector<T> travel(n);
   std::vector<Aabb> boxes(n);
+  std::vector<Mat3<T>> rotation(n);  // each body's, for the pairs' cached manifolds
   for (std::uint32_t i = 0; i < n; ++i) {
+    rotation[i] = bodies[i].q.toRotationMatrix();
     travel[i] = bodies[i].v.norm() * dt;
     const Vec3<T> r = reach(bodies[i]).array() + T(s.speculativeDistance) / 2 + travel[i];
     // Rounded outward to float: the grown box covers the body in either precision.
@@ -306,16 +308,17 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
   const int t = keyed.size() < kParallelPairs ? 1 : threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(static) num_threads(t)
   for (std::size_t i = 0; i < keyed.size(); ++i) {
-    const BodyT<T>&a = bodies[keyed[i].second.a], &b = bodies[keyed[i].second.b];
-    if (s.reuseManifolds && previous[i] && reusable(*previous[i], a, b)) {
-      manifolds[i] = reused(*previous[i], a, b);
+    const auto [ia, ib] = keyed[i].second;
+    const BodyT<T>&a = bodies[ia], &b = bodies[ib];
+    const Mat3<T>&Ra = rotation[ia], &Rb = rotation[ib];
+    if (s.reuseManifolds && previous[i] && reusable(*previous[i], a, Ra, b)) {
+      manifolds[i] = reused(*previous[i], a, Ra, b, Rb);
       geometry[i] = *previous[i];
       continue;
     }
-    const T maxSeparation =
-        T(s.speculativeDistance) + travel[keyed[i].second.a] + travel[keyed[i].second.b];
-    manifolds[i] = collideBody(a, b, maxSeparation);
-    if (manifolds[i].count > 0) geometry[i] = pairGeometry(keyed[i].first, manifolds[i], a, b);
+    manifolds[i] = collideBody(a, b, T(s.speculativeDistance) + travel[ia] + travel[ib]);
+    if (manifolds[i].count > 0)
+      geometry[i] = pairGeometry(keyed[i].first, manifolds[i], a, Ra, b, Rb);
   }
   nextPairs.clear();
   for (std::size_t i = 0; i < keyed.size(); ++i) {

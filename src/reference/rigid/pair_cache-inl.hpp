@@ -26,20 +26,21 @@ struct RelativePose {
   Quat<T> rotation;
 };
 
+// Ra, Rb: the bodies' orientations as matrices, made once a step for all of a body's pairs
+// (rotating by a matrix is half the work of rotating by the quaternion).
 template <class T>
-RelativePose<T> relativePose(const BodyT<T>& a, const BodyT<T>& b) {
-  const Quat<T> toA = a.q.conjugate();
-  return {toA * (b.x - a.x), toA * b.q};
+RelativePose<T> relativePose(const BodyT<T>& a, const Mat3<T>& Ra, const BodyT<T>& b) {
+  return {Ra.transpose() * (b.x - a.x), a.q.conjugate() * b.q};
 }
 
 // The manifold m of bodies a and b (the pair `key`) as found now, for reuse in later steps.
 template <class T>
 PairGeometryT<T> pairGeometry(std::uint64_t key, const ManifoldT<T>& m, const BodyT<T>& a,
-                              const BodyT<T>& b) {
+                              const Mat3<T>& Ra, const BodyT<T>& b, const Mat3<T>& Rb) {
   PairGeometryT<T> g{};
   g.key = key, g.count = m.count;
-  const RelativePose<T> pose = relativePose(a, b);
-  const Quat<T> toA = a.q.conjugate(), toB = b.q.conjugate();
+  const RelativePose<T> pose = relativePose(a, Ra, b);
+  const auto toA = Ra.transpose(), toB = Rb.transpose();
   const Vec3<T> n = toA * m.normal;
   for (int k = 0; k < 3; ++k) g.position[k] = pose.position[k], g.normal[k] = n[k];
   for (int k = 0; k < 4; ++k) g.rotation[k] = pose.rotation.coeffs()[k];
@@ -56,8 +57,8 @@ PairGeometryT<T> pairGeometry(std::uint64_t key, const ManifoldT<T>& m, const Bo
 
 // Whether the pair's pose is still near the one its cached manifold was found at.
 template <class T>
-bool reusable(const PairGeometryT<T>& g, const BodyT<T>& a, const BodyT<T>& b) {
-  const RelativePose<T> pose = relativePose(a, b);
+bool reusable(const PairGeometryT<T>& g, const BodyT<T>& a, const Mat3<T>& Ra, const BodyT<T>& b) {
+  const RelativePose<T> pose = relativePose(a, Ra, b);
   const Vec3<T> moved = pose.position - Vec3<T>(g.position[0], g.position[1], g.position[2]);
   const Quat<T> was(g.rotation[3], g.rotation[0], g.rotation[1], g.rotation[2]);
   // The turn between the two: its vector part is sin(angle / 2) along the axis.
@@ -69,13 +70,14 @@ bool reusable(const PairGeometryT<T>& g, const BodyT<T>& a, const BodyT<T>& b) {
 // The cached manifold g carried to the bodies' poses now: the surface points moved with their
 // bodies, the normal with A, each separation measured between the two points along it.
 template <class T>
-ManifoldT<T> reused(const PairGeometryT<T>& g, const BodyT<T>& a, const BodyT<T>& b) {
+ManifoldT<T> reused(const PairGeometryT<T>& g, const BodyT<T>& a, const Mat3<T>& Ra,
+                    const BodyT<T>& b, const Mat3<T>& Rb) {
   ManifoldT<T> m;
-  m.normal = a.q * Vec3<T>(g.normal[0], g.normal[1], g.normal[2]);
+  m.normal = Ra * Vec3<T>(g.normal[0], g.normal[1], g.normal[2]);
   m.count = g.count;
   for (int i = 0; i < m.count; ++i) {
-    const Vec3<T> onA = a.x + a.q * Vec3<T>(g.onA[i][0], g.onA[i][1], g.onA[i][2]);
-    const Vec3<T> onB = b.x + b.q * Vec3<T>(g.onB[i][0], g.onB[i][1], g.onB[i][2]);
+    const Vec3<T> onA = a.x + Ra * Vec3<T>(g.onA[i][0], g.onA[i][1], g.onA[i][2]);
+    const Vec3<T> onB = b.x + Rb * Vec3<T>(g.onB[i][0], g.onB[i][1], g.onB[i][2]);
     ContactPointT<T>& p = m.points[std::size_t(i)];
     p.separation = (onB - onA).dot(m.normal);
     p.point = onA + p.separation / 2 * m.normal;
