@@ -154,83 +154,127 @@ void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
   });
 }
 
+// One vector of contacts through a solve pass: its rows, its bodies, and a point's friction and
+// normal steps (the reference's solveContacts, in the same order of operations).
 template <class D>
-void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
-            const core::ContactPass& pass) {
+struct SolveLanes {
   using V = LaneOf<D>;
   using R = core::ContactRows;
-  const V zero = Zero(d), one = Set(d, 1.0f), invH = Set(d, pass.invH),
-          minPush = Set(d, -pass.maxPush), baumgarte = Set(d, pass.baumgarte * pass.invH),
-          slop = Set(d, pass.slop);
-  forEachVector(d, rows, [&](std::size_t lane) {
-    const RowLanes r{rows.lanes(lane)};
-    LaneBodies<D> a(d, bodies, rows, lane, false), b(d, bodies, rows, lane, true);
-    const Vec3L<V> n = load3(d, r, R::nx);
-    V biasRate = zero, massScale = one, impulseScale = zero;
+  D d;
+  const core::ContactPass& pass;
+  RowLanes r;
+  LaneBodies<D> a, b;
+  Vec3L<V> n, t[2];
+  V friction, biasRate, massScale, impulseScale;
+  Vec3L<V> nA, nB;  // the reference's Separation: a point's n.(dq r - r) as (dq^-1 n - n).r
+  V along;
+
+  SolveLanes(D d_, const core::ContactRows& rows, const core::SolverBody* bodies, std::size_t lane,
+             const core::ContactPass& p)
+      : d(d_),
+        pass(p),
+        r{rows.lanes(lane)},
+        a(d, bodies, rows, lane, false),
+        b(d, bodies, rows, lane, true),
+        n(load3(d, r, R::nx)),
+        t{load3(d, r, R::t1x), load3(d, r, R::t2x)},
+        friction(Load(d, r[R::friction])),
+        biasRate(Zero(d)),
+        massScale(Set(d, 1.0f)),
+        impulseScale(Zero(d)) {
     if (pass.bias == core::ContactPass::kSoft) {
       biasRate = Load(d, r[R::biasRate]);
       massScale = Load(d, r[R::massScale]);
       impulseScale = Load(d, r[R::impulseScale]);
     }
-    const Vec3L<V> t[2] = {load3(d, r, R::t1x), load3(d, r, R::t2x)};
-    const V friction = Load(d, r[R::friction]);
-    for (std::size_t j = 0; j < 4; ++j) {
-      const std::size_t k = pass.reverse ? 3 - j : j;
-      const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
-      // The reference's cone clamp (solver-inl.hpp), in the same order of operations.
-      const V limit = friction * Load(d, r[p + R::normalImpulse]);
-      const Vec3L<V> dv = relativeVelocity(a, b, rA, rB);
-      V old[2], total[2];
-      for (std::size_t i = 0; i < 2; ++i) {
-        const V vt = dot(dv, t[i]);
-        old[i] = Load(d, r[p + R::tangent1 + i]);
-        total[i] = old[i] - Load(d, r[p + R::tangentMass1 + i]) * vt;
-      }
-      const V squared = total[0] * total[0] + total[1] * total[1];
-      const auto over = Gt(squared, limit * limit);  // then squared > 0
-      if (!AllFalse(d, over)) {  // a resting pile's points mostly stick: no root, no division
-        const V scale = limit / Sqrt(IfThenElse(over, squared, one));
-        for (std::size_t i = 0; i < 2; ++i) total[i] = IfThenElse(over, total[i] * scale, total[i]);
-      }
-      for (std::size_t i = 0; i < 2; ++i) Store(total[i], d, r[p + R::tangent1 + i]);
-      applyImpulse(a, b, rA, rB, t[0] * (total[0] - old[0]) + t[1] * (total[1] - old[1]));
+  }
+  static std::size_t point(std::size_t k) { return R::kPoint + k * R::kPointFields; }
+
+  HWY_INLINE void frictionAt(std::size_t k) {
+    const std::size_t p = point(k);
+    const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
+    // The reference's cone clamp (solver-inl.hpp), in the same order of operations.
+    const V limit = friction * Load(d, r[p + R::normalImpulse]);
+    const Vec3L<V> dv = relativeVelocity(a, b, rA, rB);
+    V old[2], total[2];
+    for (std::size_t i = 0; i < 2; ++i) {
+      const V vt = dot(dv, t[i]);
+      old[i] = Load(d, r[p + R::tangent1 + i]);
+      total[i] = old[i] - Load(d, r[p + R::tangentMass1 + i]) * vt;
     }
-    // The reference's Separation: a point's n.(dq r - r) as (dq^-1 n - n).r.
-    const Vec3L<V> nA = a.turnedBack(n), nB = b.turnedBack(n);
-    const V along = dot(b.dp - a.dp, n);
-    for (std::size_t j = 0; j < 4; ++j) {
-      const std::size_t k = pass.reverse ? 3 - j : j;
-      const std::size_t p = R::kPoint + k * R::kPointFields;
-      const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
-      const V sep = Load(d, r[p + R::base]) + (along + (dot(nB, rB) - dot(nA, rA)));
-      V bias = zero, ms = one, is = zero;
-      if (pass.bias == core::ContactPass::kSoft) {
-        bias = Max(biasRate * sep, minPush), ms = massScale, is = impulseScale;
-      } else if (pass.bias == core::ContactPass::kBaumgarte) {
-        bias = baumgarte * Min(zero, sep + slop);
-      }
-      const auto speculative = Gt(sep, zero);
-      bias = IfThenElse(speculative, sep * invH, bias);
-      ms = IfThenElse(speculative, one, ms);
-      is = IfThenElse(speculative, zero, is);
-      const V vn = relativeAlong(a, b, rA, rB, n);
-      float* accumulated = r[p + R::normalImpulse];
-      const V old = Load(d, accumulated);
-      const V mass = Load(d, r[p + R::normalMass]);
-      const V total = Max(old + (Neg(mass * ms * (vn + bias)) - is * old), zero);
-      const V impulse = total - old;
-      Store(total, d, accumulated);
-      float* maxNormal = r[p + R::maxNormal];
-      Store(Max(Load(d, maxNormal), impulse), d, maxNormal);
-      float* relative = r[p + R::relative];
-      Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d,
-            relative);
-      applyImpulse(a, b, rA, rB, n * impulse);
+    const V squared = total[0] * total[0] + total[1] * total[1];
+    const auto over = Gt(squared, limit * limit);  // then squared > 0
+    if (!AllFalse(d, over)) {  // a resting pile's points mostly stick: no root, no division
+      const V scale = limit / Sqrt(IfThenElse(over, squared, Set(d, 1.0f)));
+      for (std::size_t i = 0; i < 2; ++i) total[i] = IfThenElse(over, total[i] * scale, total[i]);
     }
-    a.store(d, bodies);
-    b.store(d, bodies);
-  });
+    for (std::size_t i = 0; i < 2; ++i) Store(total[i], d, r[p + R::tangent1 + i]);
+    applyImpulse(a, b, rA, rB, t[0] * (total[0] - old[0]) + t[1] * (total[1] - old[1]));
+  }
+
+  HWY_INLINE void beginNormals() {
+    nA = a.turnedBack(n), nB = b.turnedBack(n);
+    along = dot(b.dp - a.dp, n);
+  }
+
+  HWY_INLINE void normalAt(std::size_t k) {
+    const std::size_t p = point(k);
+    const V zero = Zero(d), one = Set(d, 1.0f);
+    const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
+    const V sep = Load(d, r[p + R::base]) + (along + (dot(nB, rB) - dot(nA, rA)));
+    V bias = zero, ms = one, is = zero;
+    if (pass.bias == core::ContactPass::kSoft) {
+      bias = Max(biasRate * sep, Set(d, -pass.maxPush)), ms = massScale, is = impulseScale;
+    } else if (pass.bias == core::ContactPass::kBaumgarte) {
+      bias = Set(d, pass.baumgarte * pass.invH) * Min(zero, sep + Set(d, pass.slop));
+    }
+    const auto speculative = Gt(sep, zero);
+    bias = IfThenElse(speculative, sep * Set(d, pass.invH), bias);
+    ms = IfThenElse(speculative, one, ms);
+    is = IfThenElse(speculative, zero, is);
+    const V vn = relativeAlong(a, b, rA, rB, n);
+    float* accumulated = r[p + R::normalImpulse];
+    const V old = Load(d, accumulated);
+    const V mass = Load(d, r[p + R::normalMass]);
+    const V total = Max(old + (Neg(mass * ms * (vn + bias)) - is * old), zero);
+    const V impulse = total - old;
+    Store(total, d, accumulated);
+    float* maxNormal = r[p + R::maxNormal];
+    Store(Max(Load(d, maxNormal), impulse), d, maxNormal);
+    float* relative = r[p + R::relative];
+    Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d, relative);
+    applyImpulse(a, b, rA, rB, n * impulse);
+  }
+};
+
+// The points in turn, forward or backward, each step taken for every vector given before the
+// next: the vectors share no moving body, so their steps are independent and their chains of
+// dependent arithmetic (each point's impulse moves the bodies the next one reads) overlap.
+template <class D, class... Lanes>
+HWY_INLINE void solveLanes(const core::ContactPass& pass, core::SolverBody* bodies,
+                           Lanes&... lanes) {
+  for (std::size_t j = 0; j < 4; ++j) (lanes.frictionAt(pass.reverse ? 3 - j : j), ...);
+  (lanes.beginNormals(), ...);
+  for (std::size_t j = 0; j < 4; ++j) (lanes.normalAt(pass.reverse ? 3 - j : j), ...);
+  ((lanes.a.store(lanes.d, bodies), lanes.b.store(lanes.d, bodies)), ...);
+}
+
+template <class D>
+void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
+            const core::ContactPass& pass) {
+  const std::size_t N = Lanes(d);
+  for (std::size_t batch = 0; batch < rows.batches; ++batch) {
+    std::size_t lane = rows.batchBegin[batch];
+    const std::size_t end = rows.batchBegin[batch + 1];
+    for (; lane + 2 * N <= end; lane += 2 * N) {  // two vectors of a batch at once
+      SolveLanes<D> first(d, rows, bodies, lane, pass), second(d, rows, bodies, lane + N, pass);
+      solveLanes<D>(pass, bodies, first, second);
+    }
+    if (lane < end) {
+      SolveLanes<D> last(d, rows, bodies, lane, pass);
+      solveLanes<D>(pass, bodies, last);
+    }
+  }
 }
 
 template <class D>
