@@ -166,6 +166,7 @@ struct SolveLanes {
   LaneBodies<D> a, b;
   Vec3L<V> n, t[2];
   V friction, biasRate, massScale, impulseScale;
+  bool bounces;     // a lane has restitution: the points' impact speeds and largest pushes kept
   Vec3L<V> nA, nB;  // the reference's Separation: a point's n.(dq r - r) as (dq^-1 n - n).r
   V along;
 
@@ -181,7 +182,8 @@ struct SolveLanes {
         friction(Load(d, r[R::friction])),
         biasRate(Zero(d)),
         massScale(Set(d, 1.0f)),
-        impulseScale(Zero(d)) {
+        impulseScale(Zero(d)),
+        bounces(!AllTrue(d, Eq(Load(d, r[R::restitution]), Zero(d)))) {
     if (pass.bias == core::ContactPass::kSoft) {
       biasRate = Load(d, r[R::biasRate]);
       massScale = Load(d, r[R::massScale]);
@@ -239,10 +241,15 @@ struct SolveLanes {
     const V total = Max(old + (Neg(mass * ms * (vn + bias)) - is * old), zero);
     const V impulse = total - old;
     Store(total, d, accumulated);
-    float* maxNormal = r[p + R::maxNormal];
-    Store(Max(Load(d, maxNormal), impulse), d, maxNormal);
-    float* relative = r[p + R::relative];
-    Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d, relative);
+    // Only restitution reads these (where a lane's restitution is not 0): without it, 8 of the
+    // 90 lines a vector reads and 8 of the 20 it writes are left alone.
+    if (bounces) {
+      float* maxNormal = r[p + R::maxNormal];
+      Store(Max(Load(d, maxNormal), impulse), d, maxNormal);
+      float* relative = r[p + R::relative];
+      Store(IfThenElse(Gt(total, zero), Min(Load(d, relative), vn), Load(d, relative)), d,
+            relative);
+    }
     applyImpulse(a, b, rA, rB, n * impulse);
   }
 };
