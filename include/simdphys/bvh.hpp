@@ -75,6 +75,8 @@ class Bvh {
   int depth() const { return depth_; }
 
  private:
+  // A mesh's tree makes its primitives straight from its triangles (no array of bounds first).
+  friend class MeshBvh;
   void buildFrom(AlignedVector<detail::BvhPrimRef> prims, const BvhBuildOptions& options,
                  const char* where);
   void requireBoxTree(const char* where) const;

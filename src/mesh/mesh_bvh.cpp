@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "simd/kernels.hpp"
 #include "simdphys/geometry3d/intersect.hpp"
 #include "simdphys/geometry3d/raycast.hpp"
 #include "src/bvh/scalar_walk.hpp"
@@ -261,7 +262,19 @@ float extentOf(const Mesh& m) {
 
 MeshBvh::MeshBvh(Mesh mesh) : mesh_(std::move(mesh)) {
   mesh_.validate("MeshBvh");
-  bvh_.build(triangleBounds(mesh_), {kLeafSize, kLeafSize});
+  // The builder's primitives made from the triangles at once: the validated mesh's bounds are
+  // well formed, and an array of them first would be one more pass over 24 bytes a triangle.
+  if (mesh_.size() > Bvh::kMaxPrimitives)
+    throw Error("MeshBvh: " + std::to_string(mesh_.size()) + " triangles, more than the " +
+                std::to_string(Bvh::kMaxPrimitives) + " a tree can index");
+  AlignedVector<detail::BvhPrimRef> prims;  // reserved, not sized: a sized vector is zeroed first
+  prims.reserve(mesh_.size());
+  for (std::uint32_t i = 0; i < mesh_.size(); ++i) {
+    const Aabb b = boundsOf(mesh_.triangle(i));
+    prims.push_back(detail::BvhPrimRef({b.min.x(), b.min.y(), b.min.z()},
+                                       {b.max.x(), b.max.y(), b.max.z()}, i));
+  }
+  bvh_.buildFrom(std::move(prims), {kLeafSize, kLeafSize}, "MeshBvh");
   extent_ = extentOf(mesh_);
   fillBlocks();
 }
