@@ -257,7 +257,7 @@ struct SolveLanes {
 // The points in turn, forward or backward, each step taken for every vector given before the
 // next: the vectors share no moving body, so their steps are independent and their chains of
 // dependent arithmetic (each point's impulse moves the bodies the next one reads) overlap.
-template <class D, class... Lanes>
+template <class... Lanes>
 HWY_INLINE void solveLanes(const core::ContactPass& pass, core::SolverBody* bodies,
                            Lanes&... lanes) {
   for (std::size_t j = 0; j < 4; ++j) (lanes.frictionAt(pass.reverse ? 3 - j : j), ...);
@@ -275,11 +275,11 @@ void solveT(D d, const core::ContactRows& rows, core::SolverBody* bodies,
     const std::size_t end = rows.batchBegin[batch + 1];
     for (; lane + 2 * N <= end; lane += 2 * N) {  // two vectors of a batch at once
       SolveLanes<D> first(d, rows, bodies, lane, pass), second(d, rows, bodies, lane + N, pass);
-      solveLanes<D>(pass, bodies, first, second);
+      solveLanes(pass, bodies, first, second);
     }
     if (lane < end) {
       SolveLanes<D> last(d, rows, bodies, lane, pass);
-      solveLanes<D>(pass, bodies, last);
+      solveLanes(pass, bodies, last);
     }
   }
 }
