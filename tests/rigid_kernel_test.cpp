@@ -80,12 +80,14 @@ TEST_P(RigidKernel, OneStepMatchesTheReference) {
     }
     World world = nudgedPyramid(5, model);
     world.step();
-    // The same contacts in the same order, the same arithmetic up to the order of a few sums
-    // and the formula of a rotation, so the two differ by rounding alone: no more than twice what
-    // float's rounding moves the reference from the same step in double (measured here: 1.2e-6 m
-    // for the soft step, 2.4e-7 for Baumgarte), plus 1e-7 m for steps where that happens to be
-    // small; a thousandth of a step's motion (g dt^2 and a few mm of push-out). Removing one
-    // friction direction from the kernels misses it by 7e-4 (soft step) and 2e-3 (Baumgarte).
+    // The same contacts in the same order, the same arithmetic up to the order of a few sums,
+    // the formula of a rotation and the kernels' fused multiply-adds, so the two differ by
+    // rounding alone: no more than twice what float's rounding moves the reference from the same
+    // step in double (measured here: 1.8e-7 m for the soft step, 2.4e-7 for Baumgarte), plus
+    // 1e-7 m for steps where that happens to be small; a thousandth of a step's motion (g dt^2
+    // and a few mm of push-out). The kernels measured 9e-10 from it with FMA, 3e-8 without.
+    // Removing one friction direction from the kernels misses it by 7e-4 (soft step) and 2e-3
+    // (Baumgarte).
     const double tolerance = 2 * rounding + 1e-7;
     EXPECT_LT(largestDifference(positions(world), reference), tolerance);
     if (GetParam() != "reference") {
