@@ -29,6 +29,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "simdphys/core.hpp"
@@ -66,6 +67,17 @@ struct PairGeometryT {
   int count;
   std::uint32_t id[4];
   T onA[4][3], onB[4][3];
+};
+
+// The broadphase's pairs kept from step to step (Box2D's fat boxes): each body's box grown by a
+// tenth of its size, and the pairs of the grown boxes, A the body of the lower slot, in key order.
+// While every body's box stays inside its grown one (and the bodies keep their slots), the
+// pairs whose boxes overlap are among these, so a still pile skips the broadphase. The pairs
+// found are the same either way: a cache of no state (not saved in snapshots).
+struct BroadphaseCache {
+  std::vector<Aabb> grown;
+  std::vector<std::uint32_t> slots;  // each body's handle slot when the pairs were found
+  std::vector<std::pair<std::uint64_t, Pair>> pairs;
 };
 
 // What a step leaves the next: the manifolds' impulses by (key, sub), and the pairs of bodies'
@@ -223,6 +235,7 @@ class RigidBodies : public StreamSet<fields::Body> {
   // the life of the RigidBodies (a game has few shapes, shared by many bodies).
   std::vector<std::shared_ptr<const HullShape>> hulls_;
   detail::ContactCacheT<float> cache_;
+  detail::BroadphaseCache broadphase_;
   float deepest_ = 0;
   std::size_t manifolds_ = 0, points_ = 0, colours_ = 0, overflow_ = 0;
   double passSeconds_ = 0;

@@ -9,11 +9,13 @@ struct BodiesD::State {
   std::vector<detail::BodyT<double>> bodies;
   std::vector<std::uint32_t> slots;
   detail::ContactCacheT<double> cache, next;
+  detail::BroadphaseCache broadphase;
 };
 
 BodiesD::BodiesD(const RigidBodies& bodies)
     : state_(new State{RigidBodies::Internals::load<double>(bodies),
                        RigidBodies::Internals::slots(bodies),
+                       {},
                        {},
                        {}}) {}
 
@@ -23,9 +25,10 @@ void BodiesD::step(const World& world) {
   const WorldSettings& w = world.settings();
   const double dt = double(w.timeStep / float(w.substeps));
   for (int sub = 0; sub < w.substeps; ++sub) {
-    deepest_ = detail::stepState(state_->bodies, state_->slots, state_->cache, state_->next,
-                                 world.obstacles(), world.bodies().settings(), dt)
-                   .deepest;
+    deepest_ =
+        detail::stepState(state_->bodies, state_->slots, state_->cache, state_->next,
+                          state_->broadphase, world.obstacles(), world.bodies().settings(), dt)
+            .deepest;
     std::swap(state_->cache, state_->next);
   }
 }

@@ -87,10 +87,10 @@ void Internals::step(RigidBodies& bodies, const Obstacles& obstacles, float dt, 
   // The contact passes on the active path: the reference on Eigen, or the kernels over rows
   // (or their plain loops), the rest of the step shared.
   const RigidStepStats stats =
-      referencePathActive()
-          ? stepState(state, slots, cache, next, obstacles, bodies.settings(), dt, threads)
-          : stepState(state, slots, cache, next, obstacles, bodies.settings(), dt, threads,
-                      kernelPasses(state.size()));
+      referencePathActive() ? stepState(state, slots, cache, next, bodies.broadphase_, obstacles,
+                                        bodies.settings(), dt, threads)
+                            : stepState(state, slots, cache, next, bodies.broadphase_, obstacles,
+                                        bodies.settings(), dt, threads, kernelPasses(state.size()));
   // Nothing is stored unless every body stays finite and in range: the world is unchanged then.
   for (std::size_t i = 0; i < state.size(); ++i) {
     const auto inRange = [](const Vec3f& x) {

@@ -237,6 +237,44 @@ void putInOrder(std::vector<ContactConstraintT<T>>& contacts, const ColourOrder&
   contacts.swap(orderedCopy(contacts, colours.order));
 }
 
+// The pairs of bodies whose boxes overlap (touching counts), A the body of the lower slot, in key
+// order, into `out`: those of the cached pairs of grown boxes whose boxes overlap, if every box
+// is still inside its grown one; else the cache is made anew (BroadphaseCache) first.
+inline void overlappingPairs(const std::vector<Aabb>& boxes, std::span<const std::uint32_t> slots,
+                             BroadphaseCache& cache,
+                             std::vector<std::pair<std::uint64_t, Pair>>& out) {
+  const std::size_t n = boxes.size();
+  bool covered =
+      cache.slots.size() == n && std::equal(slots.begin(), slots.end(), cache.slots.begin());
+  for (std::size_t i = 0; covered && i < n; ++i)
+    covered = (cache.grown[i].min.array() <= boxes[i].min.array()).all() &&
+              (boxes[i].max.array() <= cache.grown[i].max.array()).all();
+  if (!covered) {
+    cache.grown.resize(n);
+    BoxStream bounds;
+    bounds.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3f margin = Vec3f::Constant(0.1f * (boxes[i].max - boxes[i].min).maxCoeff());
+      cache.grown[i] = {boxes[i].min - margin, boxes[i].max + margin};
+      bounds.push(cache.grown[i]);
+    }
+    std::vector<Pair> pairs;
+    findPairs(bounds, pairs);
+    cache.pairs.clear();
+    for (const Pair& p : pairs) {
+      // A is the body of the lower slot, so the pair keeps its order (and ids) as indices move.
+      const Pair ordered = slots[p.a] < slots[p.b] ? p : Pair{p.b, p.a};
+      cache.pairs.push_back({pairKey(slots[ordered.a], slots[ordered.b]), ordered});
+    }
+    std::sort(cache.pairs.begin(), cache.pairs.end(),
+              [](const auto& l, const auto& r) { return l.first < r.first; });
+    cache.slots.assign(slots.begin(), slots.end());
+  }
+  out.clear();
+  for (const auto& kp : cache.pairs)
+    if (overlaps(boxes[kp.second.a], boxes[kp.second.b])) out.push_back(kp);
+}
+
 // Below this many body pairs the manifolds are found on one thread: starting threads costs more.
 inline constexpr std::size_t kParallelPairs = 256;
 
@@ -250,12 +288,11 @@ inline constexpr std::size_t kParallelPairs = 256;
 template <class T>
 void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vector<BodyT<T>>& bodies,
                   std::span<const std::uint32_t> slots, const std::vector<PairGeometryT<T>>& cached,
-                  std::vector<PairGeometryT<T>>& nextPairs, const Obstacles& obstacles,
-                  const RigidSettings& s, T dt, int threads, T& deepest) {
+                  std::vector<PairGeometryT<T>>& nextPairs, BroadphaseCache& broadphase,
+                  const Obstacles& obstacles, const RigidSettings& s, T dt, int threads,
+                  T& deepest) {
   const auto n = std::uint32_t(bodies.size());
   const std::uint32_t dummy = n;
-  BoxStream bounds;
-  bounds.reserve(n);
   std::vector<T> travel(n);
   std::vector<Aabb> boxes(n);
   std::vector<Mat3<T>> rotation(n);  // each body's, for the pairs' cached manifolds
@@ -269,23 +306,16 @@ void findContacts(std::vector<ContactConstraintT<T>>& contacts, const std::vecto
     const Vec3f hi = (bodies[i].x + r).template cast<float>().array() +
                      1e-4f * (1 + r.template cast<float>().array());
     boxes[i] = {lo, hi};
-    bounds.push(boxes[i]);
   }
-  std::vector<Pair> pairs;
-  findPairs(bounds, pairs);
-  contacts.clear();
-  contacts.reserve(pairs.size() + n);
   std::vector<std::pair<std::uint64_t, Pair>> keyed;
-  keyed.reserve(pairs.size());
-  for (const Pair& p : pairs) {
-    if (bodies[p.a].invMass == 0 && bodies[p.b].invMass == 0) continue;
-    if (bodies[p.a].island != 0 && bodies[p.b].island != 0) continue;  // both asleep
-    // A is the body of the lower slot, so the pair keeps its order (and ids) as indices move.
-    const Pair ordered = slots[p.a] < slots[p.b] ? p : Pair{p.b, p.a};
-    keyed.push_back({pairKey(slots[ordered.a], slots[ordered.b]), ordered});
-  }
-  std::sort(keyed.begin(), keyed.end(),
-            [](const auto& l, const auto& r) { return l.first < r.first; });
+  overlappingPairs(boxes, slots, broadphase, keyed);
+  std::erase_if(keyed, [&](const auto& kp) {
+    const auto [a, b] = kp.second;
+    return (bodies[a].invMass == 0 && bodies[b].invMass == 0) ||
+           (bodies[a].island != 0 && bodies[b].island != 0);  // both asleep
+  });
+  contacts.clear();
+  contacts.reserve(keyed.size() + n);
   // Each pair's cached manifold, by a walk through both in key order.
   std::vector<const PairGeometryT<T>*> previous(keyed.size(), nullptr);
   for (std::size_t i = 0, j = 0; i < keyed.size(); ++i) {

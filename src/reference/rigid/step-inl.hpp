@@ -249,14 +249,15 @@ struct ReferencePasses {
 template <class T, class Passes = ReferencePasses<T>>
 RigidStepStats stepState(std::vector<BodyT<T>>& bodies, std::span<const std::uint32_t> slots,
                          const ContactCacheT<T>& cache, ContactCacheT<T>& next,
-                         const Obstacles& obstacles, const RigidSettings& s, T dt, int threads = 1,
+                         BroadphaseCache& broadphase, const Obstacles& obstacles,
+                         const RigidSettings& s, T dt, int threads = 1,
                          Passes&& passes = Passes()) {
   RigidStepStats stats;
   T deepest = 0;
   // A thread's buffer, reused from step to step (rewritten whole: no state carries over).
   static thread_local std::vector<ContactConstraintT<T>> contacts;
-  findContacts(contacts, bodies, slots, cache.pairs, next.pairs, obstacles, s, dt, threads,
-               deepest);
+  findContacts(contacts, bodies, slots, cache.pairs, next.pairs, broadphase, obstacles, s, dt,
+               threads, deepest);
   // In findContacts' order: near key order.
   if (s.warmStarting) warmStartFrom(cache.manifolds, contacts);
   const ColourOrder colours = colourContacts(contacts, bodies);
