@@ -148,7 +148,20 @@ HWY_INLINE V effectiveMass(D d, const LaneBodies<D>& a, const LaneBodies<D>& b, 
   return IfThenElse(some, Set(d, 1.0f) / IfThenElse(some, k, Set(d, 1.0f)), Zero(d));
 }
 
-// The points' masses and normal velocities at the step's start (the reference's
+// The reference's tangentsOf, in its arithmetic (unfused): t1 = (n.z, 0, -n.x) or (0, n.z, -n.y),
+// whichever of n.x and n.y is larger, normalised; t2 = n x t1.
+template <class D, class V = LaneOf<D>>
+HWY_INLINE void tangentsOf(D d, const Vec3L<V>& n, Vec3L<V>& t1, Vec3L<V>& t2) {
+  const auto xLarger = Gt(Abs(n[0]), Abs(n[1]));
+  const V zero = Zero(d);
+  t1 = {{IfThenElse(xLarger, n[2], zero), IfThenElse(xLarger, zero, n[2]),
+         Neg(IfThenElse(xLarger, n[0], n[1]))}};
+  const V squared = dot(t1, t1);  // 0 in a padding lane (no normal): left 0, as Eigen does
+  t1 = t1 / Sqrt(IfThenElse(Gt(squared, zero), squared, Set(d, 1.0f)));
+  t2 = {{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]}};
+}
+
+// The points' tangents, masses and normal velocities at the step's start (the reference's
 // prepareContacts); points past a manifold's count stay inert.
 template <class D>
 void prepareT(D d, const core::ContactRows& rows, const core::SolverBody* bodies) {
@@ -157,7 +170,13 @@ void prepareT(D d, const core::ContactRows& rows, const core::SolverBody* bodies
   forEachVector(d, rows, [&](std::size_t lane) {
     const RowLanes r{rows.lanes(lane)};
     const LaneBodies<D> a(d, bodies, rows, lane, false), b(d, bodies, rows, lane, true);
-    const Vec3L<V> n = load3(d, r, R::nx), t1 = load3(d, r, R::t1x), t2 = load3(d, r, R::t2x);
+    const Vec3L<V> n = load3(d, r, R::nx);
+    Vec3L<V> t1, t2;
+    tangentsOf(d, n, t1, t2);
+    for (std::size_t k = 0; k < 3; ++k) {
+      Store(t1[k], d, r[R::t1x + k]);
+      Store(t2[k], d, r[R::t2x + k]);
+    }
     const V count = Load(d, r[R::count]);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;

@@ -60,9 +60,7 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
     const ContactConstraintT<float>& c = contacts[i];
     a_[lane] = c.a, b_[lane] = c.b;
     for (int k = 0; k < 3; ++k) {
-      at(R::nx + std::size_t(k), lane) = c.normal[k];
-      at(R::t1x + std::size_t(k), lane) = c.tangent[0][k];
-      at(R::t2x + std::size_t(k), lane) = c.tangent[1][k];
+      at(R::nx + std::size_t(k), lane) = c.normal[k];  // the tangents are prepareT's
     }
     at(R::friction, lane) = c.friction, at(R::restitution, lane) = c.restitution;
     at(R::count, lane) = float(c.count);

@@ -148,7 +148,8 @@ inline bool mayTouch(const ObstacleShape& shape, const Aabb& body) {
 }
 
 // Appends the constraint of manifold m between bodies a and b (b = the static dummy for an
-// obstacle), its anchors from the points, its impulses zero.
+// obstacle), its anchors from the points, its impulses zero (its tangents are the solver's:
+// prepareContacts).
 template <class T>
 void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& m, std::uint32_t a,
                    std::uint32_t b, const Vec3<T>& centerA, const Vec3<T>& centerB, T friction,
@@ -157,7 +158,6 @@ void addConstraint(std::vector<ContactConstraintT<T>>& out, const ManifoldT<T>& 
   ContactConstraintT<T>& c = out.emplace_back();
   c.a = a, c.b = b, c.key = key, c.sub = sub, c.normal = m.normal, c.friction = friction;
   c.restitution = restitution, c.isStatic = isStatic, c.count = m.count;
-  tangentsOf(m.normal, c.tangent);
   for (int i = 0; i < m.count; ++i) {
     ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
     p.rA = m.points[std::size_t(i)].point - centerA;

@@ -53,12 +53,13 @@ T effectiveMass(const SolverBodyT<T>& a, const SolverBodyT<T>& b, const Vec3<T>&
   return k > 0 ? 1 / k : 0;
 }
 
-// Masses and restitution's reference velocities from the step's start.
+// Tangents, masses and restitution's reference velocities from the step's start.
 template <class T>
 void prepareContacts(std::vector<ContactConstraintT<T>>& contacts,
                      const std::vector<SolverBodyT<T>>& bodies) {
   for (ContactConstraintT<T>& c : contacts) {
     const SolverBodyT<T>&a = bodies[c.a], &b = bodies[c.b];
+    tangentsOf(c.normal, c.tangent);
     for (int i = 0; i < c.count; ++i) {
       ContactPointConstraintT<T>& p = c.points[std::size_t(i)];
       p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
