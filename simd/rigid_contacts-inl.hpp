@@ -127,6 +127,16 @@ HWY_INLINE V relativeAlong(const LaneBodies<D>& a, const LaneBodies<D>& b, const
   return fusedDot(relativeVelocity(a, b, rA, rB), n);
 }
 
+// The most points of the lanes' manifolds: past it every lane's points are inert (lanes are
+// grouped by count within a batch: KernelPasses::prepare), and a pass skips them.
+inline std::size_t pointsOf(ScalarLane, const RowLanes& r) {
+  return std::size_t(*r[core::ContactRows::count]);
+}
+template <class D>
+HWY_INLINE std::size_t pointsOf(D d, const RowLanes& r) {
+  return std::size_t(hn::GetLane(hn::MaxOfLanes(d, hn::Load(d, r[core::ContactRows::count]))));
+}
+
 // Each batch's vectors in turn; a batch's lanes share no moving body.
 template <class D, class F>
 HWY_INLINE void forEachVector(D d, const core::ContactRows& rows, F&& f) {
@@ -201,7 +211,7 @@ void warmStartT(D d, const core::ContactRows& rows, core::SolverBody* bodies) {
     const RowLanes r{rows.lanes(lane)};
     LaneBodies<D> a(d, bodies, rows, lane, false), b(d, bodies, rows, lane, true);
     const Vec3L<V> n = load3(d, r, R::nx), t1 = load3(d, r, R::t1x), t2 = load3(d, r, R::t2x);
-    for (std::size_t k = 0; k < 4; ++k) {
+    for (std::size_t k = 0, points = pointsOf(d, r); k < points; ++k) {
       const std::size_t p = R::kPoint + k * R::kPointFields;
       const Vec3L<V> rA = load3(d, r, p + R::rAx), rB = load3(d, r, p + R::rBx);
       const Vec3L<V> P =
@@ -226,8 +236,9 @@ struct SolveLanes {
   LaneBodies<D> a, b;
   Vec3L<V> n, t[2];
   V friction, biasRate, massScale, impulseScale;
-  bool bounces;     // a lane has restitution: the points' impact speeds and largest pushes kept
-  Vec3L<V> nA, nB;  // the reference's Separation: a point's n.(dq r - r) as (dq^-1 n - n).r
+  bool bounces;        // a lane has restitution: the points' impact speeds and largest pushes kept
+  std::size_t points;  // the most points of the lanes' manifolds
+  Vec3L<V> nA, nB;     // the reference's Separation: a point's n.(dq r - r) as (dq^-1 n - n).r
   V along;
 
   SolveLanes(D d_, const core::ContactRows& rows, const core::SolverBody* bodies, std::size_t lane,
@@ -243,7 +254,8 @@ struct SolveLanes {
         biasRate(Zero(d)),
         massScale(Set(d, 1.0f)),
         impulseScale(Zero(d)),
-        bounces(!AllTrue(d, Eq(Load(d, r[R::restitution]), Zero(d)))) {
+        bounces(!AllTrue(d, Eq(Load(d, r[R::restitution]), Zero(d)))),
+        points(pointsOf(d, r)) {
     if (pass.bias == core::ContactPass::kSoft) {
       biasRate = Load(d, r[R::biasRate]);
       massScale = Load(d, r[R::massScale]);
@@ -320,9 +332,11 @@ struct SolveLanes {
 template <class... Lanes>
 HWY_INLINE void solveLanes(const core::ContactPass& pass, core::SolverBody* bodies,
                            Lanes&... lanes) {
-  for (std::size_t j = 0; j < 4; ++j) (lanes.frictionAt(pass.reverse ? 3 - j : j), ...);
+  // Backward from the last point any lane has: the points past a lane's count are inert.
+  const std::size_t m = std::max({lanes.points...});
+  for (std::size_t j = 0; j < m; ++j) (lanes.frictionAt(pass.reverse ? m - 1 - j : j), ...);
   (lanes.beginNormals(), ...);
-  for (std::size_t j = 0; j < 4; ++j) (lanes.normalAt(pass.reverse ? 3 - j : j), ...);
+  for (std::size_t j = 0; j < m; ++j) (lanes.normalAt(pass.reverse ? m - 1 - j : j), ...);
   ((lanes.a.store(lanes.d, bodies), lanes.b.store(lanes.d, bodies)), ...);
 }
 

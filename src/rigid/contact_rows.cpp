@@ -35,12 +35,18 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
   constexpr std::uint32_t kPadding = ~0u;
   std::vector<std::uint32_t> contactAt(lanes_, kPadding);
   laneOf_.resize(contacts.size());
+  // Within a batch, the lanes by their manifolds' counts, most points first (in solving order
+  // among equals): a vector's lanes then mostly share a count, and the passes skip the points
+  // past its fullest lane's. The lanes of a batch are independent: their order changes nothing.
   std::size_t batch = 0;
+  std::vector<int> counts;
   for (const auto& [first, last] : ranges) {
-    for (std::uint32_t i = first; i < last; ++i) {
-      laneOf_[order_[i]] = batchBegin_[batch] + (i - first);
-      contactAt[batchBegin_[batch] + (i - first)] = order_[i];
-    }
+    counts.resize(last - first);
+    for (std::uint32_t i = first; i < last; ++i) counts[i - first] = contacts[order_[i]].count;
+    std::uint32_t lane = batchBegin_[batch];
+    for (int count = 4; count >= 1; --count)
+      for (std::uint32_t i = first; i < last; ++i)
+        if (counts[i - first] == count) laneOf_[order_[i]] = lane, contactAt[lane++] = order_[i];
     ++batch;
   }
   const core::ContactRows r = rows();
