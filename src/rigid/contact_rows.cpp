@@ -33,6 +33,7 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
   // Padding lanes join the static dummy to itself: no mass, no impulse, nothing moves.
   a_.assign(lanes_, dummy_), b_.assign(lanes_, dummy_);
   constexpr std::uint32_t kPadding = ~0u;
+  constexpr std::size_t kAhead = 4;
   std::vector<std::uint32_t> contactAt(lanes_, kPadding);
   laneOf_.resize(contacts.size());
   // Within a batch, the lanes by their manifolds' counts, most points first (in solving order
@@ -64,6 +65,11 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
       continue;
     }
     const ContactConstraintT<float>& c = contacts[i];
+    // A batch's contacts lie apart in `contacts`: the one a few lanes on fetched meanwhile.
+    if (lane + kAhead < lanes_ && contactAt[lane + kAhead] != kPadding) {
+      const char* ahead = reinterpret_cast<const char*>(&contacts[contactAt[lane + kAhead]]);
+      for (std::size_t line = 0; line < sizeof(c); line += 64) __builtin_prefetch(ahead + line);
+    }
     a_[lane] = c.a, b_[lane] = c.b;
     for (int k = 0; k < 3; ++k) {
       at(R::nx + std::size_t(k), lane) = c.normal[k];  // the tangents are prepareT's
