@@ -32,3 +32,14 @@ inline bool AllFalse(ScalarLane, bool m) { return !m; }
 inline bool AllTrue(ScalarLane, bool m) { return m; }
 inline std::size_t CountTrue(ScalarLane, bool m) { return m; }
 inline float IfThenElse(bool m, float a, float b) { return m ? a : b; }
+// Fused where the includer's Highway target has FMA (as Highway's own are), else a product and
+// a sum.
+#if defined(HWY_NATIVE_FMA) && HWY_NATIVE_FMA
+inline float MulAdd(float m, float x, float a) { return std::fma(m, x, a); }
+inline float MulSub(float m, float x, float s) { return std::fma(m, x, -s); }
+inline float NegMulAdd(float m, float x, float a) { return std::fma(-m, x, a); }
+#else
+inline float MulAdd(float m, float x, float a) { return m * x + a; }
+inline float MulSub(float m, float x, float s) { return m * x - s; }
+inline float NegMulAdd(float m, float x, float a) { return a - m * x; }
+#endif

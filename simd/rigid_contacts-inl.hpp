@@ -15,18 +15,9 @@ struct RowLanes {
 
 // The passes are chains of dot and cross products: with their products and sums fused they take
 // 0.7 of the time (W5, avx512dl). Highway's MulAdd family: one rounding where the target has FMA,
-// a product and a sum where it has not; the one-float lane likewise, so the plain loops do the
-// same arithmetic. The reference rounds each product: the two differ by rounding, which their
-// tests allow.
-inline float MulAdd(float m, float x, float a) {
-  return HWY_NATIVE_FMA ? std::fma(m, x, a) : m * x + a;
-}
-inline float MulSub(float m, float x, float s) {
-  return HWY_NATIVE_FMA ? std::fma(m, x, -s) : m * x - s;
-}
-inline float NegMulAdd(float m, float x, float a) {
-  return HWY_NATIVE_FMA ? std::fma(-m, x, a) : a - m * x;
-}
+// a product and a sum where it has not; the one-float lane likewise (core/scalar_lanes-inl.hpp),
+// so the plain loops do the same arithmetic. The reference rounds each product: the two differ
+// by rounding, which their tests allow.
 
 template <class V>
 HWY_INLINE V fusedDot(const Vec3L<V>& a, const Vec3L<V>& b) {
@@ -80,9 +71,8 @@ struct LaneBodies {
   }
   // The world inverse inertia times x (the reference's Mat3 product: a row's dot with x).
   Vec3L<V> inertiaTimes(const Vec3L<V>& x) const {
-    return {{fusedDot(Vec3L<V>{{inertia[0], inertia[1], inertia[2]}}, x),
-             fusedDot(Vec3L<V>{{inertia[1], inertia[3], inertia[4]}}, x),
-             fusedDot(Vec3L<V>{{inertia[2], inertia[4], inertia[5]}}, x)}};
+    const V zero = Zero(D());
+    return inertiaTimesAdd(x, {{zero, zero, zero}});
   }
   // acc + the world inverse inertia times x.
   Vec3L<V> inertiaTimesAdd(const Vec3L<V>& x, const Vec3L<V>& acc) const {
