@@ -1,5 +1,5 @@
 // A picture of workload W5 at its end: the pyramid of base 20 (2,870 unit boxes) stepped 600
-// frames (10 s) by a World at simdphys's default rigid-body settings (soft step, 6 substeps;
+// frames (10 s) by a World at simdphys's default rigid-body settings (soft step, 5 substeps;
 // sleeping off, as W5 has it). Each box's final pose becomes an OBB in a Scene with the ground;
 // each pixel casts one primary ray through it, and a ground or box hit one ray towards the sun
 // for shadows. A box is coloured by how far it moved from its start, white (not at all) to red
