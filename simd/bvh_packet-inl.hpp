@@ -13,45 +13,49 @@
 template <std::size_t N>
 class RayPacket {
   using D = hn::CappedTag<float, N>;
+  using DI = hn::RebindToSigned<D>;
   static constexpr std::size_t kLanes = hn::MaxLanes(D());
   static_assert(N % kLanes == 0 && N <= 16, "whole vectors; active lanes fit 16 bits");
-  // At most this many active rays finish a subtree on their own: a node test across the packet
-  // costs about as much as that many single-ray tests (8 boxes a vector), so packets lose below.
-  // Measured on W2 (docs/bvh.md): N / 4.
-  static constexpr int kSwitchThreshold = int(N / 4);
+  // At most this many active rays finish a subtree on their own. With the packet's pre-tests a
+  // node or leaf costs the packet little more than one ray's walk; measured on W2 (docs/bvh.md):
+  // 2 for 16 and 8 (N / 4 took 3 to 5% longer, 0 as Embree's coherent walk 4% on rows of 16).
+  static constexpr int kSwitchThreshold = 2;
 
  public:
-  // Lane i traces ray index[i] of `rays` (kAbsentLane: none).
-  // The lanes' rays are set up across the lanes, with traversalRay's operations
-  // (core/traversal_ray.hpp: the same divisions and choices, so the same values bit for bit); a
-  // lane that walks alone (single()) takes its TraversalRay from the stream then.
+  // Lane i traces ray index[i] of `rays` (kAbsentLane: none). The rays are gathered and set up
+  // across the lanes with traversalRay's operations (core/traversal_ray.hpp: the same divisions
+  // and choices, so the same values bit for bit); a lane that walks alone (single()) takes its
+  // TraversalRay from the stream then.
   RayPacket(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index)
       : mesh_(mesh), rays_(rays), index_(index) {
     using R = fields::Ray;
-    alignas(64) float direction[3][N];
-    std::uint32_t present = 0;
-    for (std::size_t i = 0; i < N; ++i) {
-      // An absent lane's bound is -inf: no box or triangle passes it.
-      const bool here = index[i] != kAbsentLane;
-      present |= std::uint32_t(here) << i;
-      for (int a = 0; a < 3; ++a) {
-        origin_[a][i] = here ? rays[R::origin + std::size_t(a)][index[i]] : 0.0f;
-        direction[a][i] = here ? rays[R::direction + std::size_t(a)][index[i]] : 1.0f;
-      }
-      bound_[i] = here ? rays[R::tMax][index[i]] : -std::numeric_limits<float>::infinity();
-      hits_[i] = Closest(bound_[i]);
-    }
+    std::uint32_t first = 0;
+    for (std::size_t i = N; i-- > 0;)
+      if (index[i] != kAbsentLane) present_ |= 1u << i, first = index[i];
     const D d;
+    const DI di;
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
     for (std::size_t h = 0; h < N; h += kLanes) {
-      const auto dx = hn::Load(d, direction[0] + h), dy = hn::Load(d, direction[1] + h),
-                 dz = hn::Load(d, direction[2] + h);
+      // Absent lanes read the first present ray (any valid index) and take neutral values: bound
+      // -inf (no box or triangle passes it) and direction 1 (a finite inverse).
+      const auto raw = hn::BitCast(di, hn::LoadU(hn::RebindToUnsigned<D>(), index + h));
+      const auto here = hn::RebindMask(d, hn::Ne(raw, hn::Set(di, -1)));
+      const auto at = hn::IfThenElse(hn::RebindMask(di, here), raw, hn::Set(di, int(first)));
+      auto gather = [&](std::size_t f, hn::Vec<D> absent) {
+        return hn::IfThenElse(here, hn::GatherIndex(d, rays[f], at), absent);
+      };
+      hn::Vec<D> direction[3];
       bool finite = true;
       for (int a = 0; a < 3; ++a) {
-        const auto inverse = hn::Div(one, hn::Load(d, direction[a] + h));
+        hn::Store(gather(R::origin + std::size_t(a), zero), d, origin_[a] + h);
+        direction[a] = gather(R::direction + std::size_t(a), one);
+        const auto inverse = hn::Div(one, direction[a]);
         hn::Store(inverse, d, inverse_[a] + h);
         finite = finite && hn::AllTrue(d, hn::IsFinite(inverse));
       }
+      hn::Store(gather(R::tMax, hn::Set(d, -std::numeric_limits<float>::infinity())), d,
+                bound_ + h);
+      const auto dx = direction[0], dy = direction[1], dz = direction[2];
       // kz: the first axis of largest |d|; kx, ky the next two, swapped for a negative d[kz].
       const auto y = hn::Gt(hn::Abs(dy), hn::Abs(dx));
       const auto z = hn::Gt(hn::Abs(dz), hn::IfThenElse(y, hn::Abs(dy), hn::Abs(dx)));
@@ -67,9 +71,13 @@ class RayPacket {
       // Absent lanes' inverses are 1: only present lanes can make the packet infinite.
       finite_ = finite_ && finite;
     }
-    for (std::uint32_t m = present; m != 0; m &= m - 1)
-      frames_ |= 1u << int(frame_[__builtin_ctz(m)]);
-    bound(present);
+    for (std::size_t i = 0; i < N; ++i) hits_[i] = Closest(bound_[i]);
+    for (std::uint32_t m = present_; m != 0; m &= m - 1) {
+      const int i = __builtin_ctz(m), frame = int(frame_[i]);
+      frames_ |= 1u << frame;
+      frameLanes_[frame] |= 1u << i;
+    }
+    bound();
   }
 
   // Traces the packet and writes each present ray's closest hit at out[index].
@@ -78,16 +86,20 @@ class RayPacket {
       trace<true>();
     else
       trace<false>();
-    for (std::size_t i = 0; i < N; ++i)
-      if (index_[i] != kAbsentLane) out[index_[i]] = hits_[i].result();
+    for (std::uint32_t m = present_; m != 0; m &= m - 1) {
+      const int i = __builtin_ctz(m);
+      out[index_[i]] = hits_[i].result();
+    }
   }
 
   // The packet as a walker of walkBvh (bvh_walk-inl.hpp). kFinite: every ray's inverse direction
-  // is finite, so Min/Max bound the slabs (raySlab's rule).
+  // is finite, so Min/Max bound the slabs (raySlab's rule). An entry is Embree's: a key that is at
+  // most every lane's entry distance, and the lanes whose ray enters the box (per-lane distances
+  // would cost a 64-byte row an entry for culling that the key and the lanes' bounds mostly do).
   struct Entry {
     std::uint32_t ref;
-    float key;      // the smallest entry distance over the lanes: nearest subtrees first
-    float dist[N];  // per lane, the scaled entry distance, +inf where the ray misses the box
+    float key;            // a lower bound of the lanes' scaled entry distances: nearest first
+    std::uint32_t lanes;  // the lanes whose ray enters the box, as bits
   };
   template <bool kFinite>
   class Walk {
@@ -95,82 +107,104 @@ class RayPacket {
     using Entry = RayPacket::Entry;
     explicit Walk(RayPacket& p) : p_(p) {}
     static std::uint32_t ref(const Entry& e) { return e.ref; }
-    // No active lane; or few, which then walk the subtree alone. The entry's distances are
-    // copied to an aligned buffer first: every test below loads them, and in the entry they
-    // straddle cache lines (packets ran 5% slower reading them there).
+    // No lane whose bound reaches the box; or few, which then walk the subtree alone.
     bool skip(const Entry& e) {
-      std::copy_n(e.dist, N, dist_);
-      const std::uint32_t active = p_.activeLanes(dist_);
-      if (__builtin_popcount(active) > kSwitchThreshold) return false;
-      for (std::uint32_t m = active; m != 0; m &= m - 1) p_.single(__builtin_ctz(m), e.ref);
+      lanes_ = e.lanes & p_.within(e.key);
+      if (__builtin_popcount(lanes_) > kSwitchThreshold) return false;
+      for (std::uint32_t m = lanes_; m != 0; m &= m - 1) p_.single(__builtin_ctz(m), e.ref);
       return true;
     }
     bool leaf(const Entry& e) {
-      p_.leaf(e.ref, dist_);
+      p_.leaf(e.ref, lanes_);
       return false;
     }
     // Children are pushed, not visited at once: each popped entry takes the hybrid switch.
     bool expand(const BvhNode& n, Entry&, Entry* stack, int& top) {
-      top = p_.template expand<kFinite>(n, dist_, stack, top);
+      top = p_.template expand<kFinite>(n, lanes_, stack, top);
       return false;
     }
 
    private:
     RayPacket& p_;
-    alignas(64) float dist_[N];  // the popped entry's
+    std::uint32_t lanes_ = 0;  // the popped entry's active lanes
   };
 
  private:
   template <bool kFinite>
   void trace() {
-    Entry root;
-    root.ref = 0;
-    root.key = 0;
-    std::fill_n(root.dist, N, 0.0f);
     Walk<kFinite> walk(*this);
-    walkBvh(mesh_.nodes, mesh_.nodeCount, walk, root);
+    walkBvh(mesh_.nodes, mesh_.nodeCount, walk, Entry{0, 0.0f, present_});
+  }
+
+  // A mask's lanes as the low bits of an integer.
+  static std::uint32_t bitsOf(hn::Mask<D> m) {
+    std::uint8_t b[8] = {};
+    hn::StoreMaskBits(D(), m, b);
+    return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8;
+  }
+  // Lanes h.. of a lane set, as a mask.
+  static hn::Mask<D> maskOf(std::uint32_t lanes, std::size_t h) {
+    std::uint8_t b[8] = {std::uint8_t(lanes >> h), std::uint8_t(lanes >> h >> 8)};
+    return hn::LoadMaskBits(D(), b);
+  }
+
+  // The lanes whose bound is at least t, as bits.
+  std::uint32_t within(float t) const {
+    const D d;
+    std::uint32_t bits = 0;
+    for (std::size_t h = 0; h < N; h += kLanes)
+      bits |= bitsOf(hn::Le(hn::Set(d, t), hn::Load(d, bound_ + h))) << h;
+    return bits;
   }
 
   // The packet's bounds for the node pre-test (Wald, Benthin, Boulos 2007's interval frustum, as
   // Embree's hybrid traversal culls a node for a whole packet): the range of its origins and
   // inverse directions per axis. Only for a packet in one octant with finite, non-zero inverses,
   // where each face's distance is monotone in origin and inverse.
-  void bound(std::uint32_t present) {
-    cull_ = finite_ && present != 0;
+  void bound() {
+    cull_ = finite_ && present_ != 0;
     if (!cull_) return;
-    const std::size_t first = std::size_t(__builtin_ctz(present));
+    const D d;
+    const auto inf = hn::Set(d, std::numeric_limits<float>::infinity()), zero = hn::Zero(d);
     for (int a = 0; a < 3; ++a) {
-      // Finite inverses have the direction's sign (a -0 direction's is -inf, not finite).
-      negative_[a] = inverse_[a][first] < 0;
-      originLo_[a] = originHi_[a] = origin_[a][first];
-      inverseLo_[a] = inverseHi_[a] = inverse_[a][first];
-    }
-    for (std::uint32_t m = present; m != 0; m &= m - 1) {
-      const std::size_t i = std::size_t(__builtin_ctz(m));
-      for (int a = 0; a < 3; ++a) {
-        const float inverse = inverse_[a][i];
-        cull_ = cull_ && (inverse < 0) == negative_[a] && inverse != 0;
-        originLo_[a] = std::min(originLo_[a], origin_[a][i]);
-        originHi_[a] = std::max(originHi_[a], origin_[a][i]);
-        inverseLo_[a] = std::min(inverseLo_[a], inverse);
-        inverseHi_[a] = std::max(inverseHi_[a], inverse);
+      auto originLo = inf, originHi = hn::Neg(inf), inverseLo = inf, inverseHi = hn::Neg(inf);
+      std::uint32_t negative = 0, zeroes = 0;
+      for (std::size_t h = 0; h < N; h += kLanes) {
+        const auto here = maskOf(present_, h);
+        const auto origin = hn::Load(d, origin_[a] + h), inverse = hn::Load(d, inverse_[a] + h);
+        originLo = hn::Min(originLo, hn::IfThenElse(here, origin, inf));
+        originHi = hn::Max(originHi, hn::IfThenElse(here, origin, hn::Neg(inf)));
+        inverseLo = hn::Min(inverseLo, hn::IfThenElse(here, inverse, inf));
+        inverseHi = hn::Max(inverseHi, hn::IfThenElse(here, inverse, hn::Neg(inf)));
+        // Finite inverses have the direction's sign (a -0 direction's is -inf, not finite).
+        negative |= bitsOf(hn::And(here, hn::Lt(inverse, zero))) << h;
+        zeroes |= bitsOf(hn::And(here, hn::Eq(inverse, zero))) << h;
       }
+      negative_[a] = negative != 0;
+      cull_ = cull_ && zeroes == 0 && (negative == 0 || negative == present_);
+      originLo_[a] = hn::GetLane(hn::MinOfLanes(d, originLo));
+      originHi_[a] = hn::GetLane(hn::MaxOfLanes(d, originHi));
+      inverseLo_[a] = hn::GetLane(hn::MinOfLanes(d, inverseLo));
+      inverseHi_[a] = hn::GetLane(hn::MaxOfLanes(d, inverseHi));
     }
   }
 
-  // The children some ray of the packet may enter, as bits: a child whose box no ray in the
-  // packet's bounds enters is culled at once, 8 children a pass, before any per-ray test. Exact
-  // for culling: rounding is monotone, so each lane's near distance is at least the bounds' least
-  // (the near face less the origin farthest along the ray, times the inverse at either end), its
-  // far distance at most their most, and the per-lane test, scaled alike, passes only where this
-  // one does.
-  std::uint32_t maybeEntered(const BvhNode& n) const {
+  // The children some ray of the packet may enter, as bits, and in `enter` a lower bound of the
+  // scaled distance where each ray does: a child whose box no ray in the packet's bounds enters
+  // is culled at once, 8 children a pass, before any per-ray test. Exact for culling: rounding is
+  // monotone, so each lane's near distance is at least the bounds' least (the near face less the
+  // origin farthest along the ray, times the inverse at either end), its far distance at most
+  // their most, and the per-lane test, scaled alike, passes only where this one does.
+  // Boxes come as rows of 8: lo[axis][box], hi[axis][box].
+  std::uint32_t maybeEntered(const float* const (&lo)[3], const float* const (&hi)[3],
+                             float* enterOut) const {
     const hn::CappedTag<float, BvhNode::kWidth> d;
     constexpr std::size_t kChildren = hn::MaxLanes(d);
-    float most = -std::numeric_limits<float>::infinity();
-    for (std::size_t i = 0; i < N; ++i) most = std::max(most, bound_[i]);
-    const float* lo[3] = {n.minX, n.minY, n.minZ};
-    const float* hi[3] = {n.maxX, n.maxY, n.maxZ};
+    const D dp;
+    auto mostV = hn::Load(dp, bound_);
+    for (std::size_t h = kLanes; h < N; h += kLanes)
+      mostV = hn::Max(mostV, hn::Load(dp, bound_ + h));
+    const float most = hn::GetLane(hn::MaxOfLanes(dp, mostV));
     std::uint32_t bits = 0;
     for (std::size_t c = 0; c < std::size_t(BvhNode::kWidth); c += kChildren) {
       auto enter = hn::Zero(d), exit = hn::Set(d, most);
@@ -185,6 +219,7 @@ class RayPacket {
         exit = hn::Min(exit, hn::Max(hn::Mul(toFar, inverseLo), hn::Mul(toFar, inverseHi)));
       }
       enter = hn::Mul(enter, hn::Set(d, detail::kEnterScale));
+      hn::StoreU(enter, d, enterOut + c);
       std::uint8_t b[8] = {};
       hn::StoreMaskBits(d, hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale))), b);
       bits |= std::uint32_t(b[0]) << c;
@@ -192,16 +227,24 @@ class RayPacket {
     return bits;
   }
 
-  // The lanes whose ray enters the subtree before its bound, as bits.
-  std::uint32_t activeLanes(const float* dist) const {
-    const D d;
-    std::uint32_t bits = 0;
-    for (std::size_t h = 0; h < N; h += kLanes) {
-      std::uint8_t b[8] = {};
-      hn::StoreMaskBits(d, hn::Le(hn::LoadU(d, dist + h), hn::Load(d, bound_ + h)), b);
-      bits |= (std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8) << h;
-    }
-    return bits;
+  // The block's first `count` triangles whose box some ray of the packet may enter, as bits: the
+  // node pre-test on the triangles' bounds, which the leaf's box holds exactly (both are the
+  // vertices' min and max), so the same monotone rounding argument keeps every triangle a lane
+  // could hit.
+  std::uint32_t maybeHit(const TriangleBlock& block, std::uint32_t count) const {
+    const hn::CappedTag<float, BvhNode::kWidth> d;
+    constexpr std::size_t kRow = hn::MaxLanes(d);
+    alignas(32) float lo[3][BvhNode::kWidth], hi[3][BvhNode::kWidth], enter[BvhNode::kWidth];
+    for (int a = 0; a < 3; ++a)
+      for (std::size_t c = 0; c < std::size_t(BvhNode::kWidth); c += kRow) {
+        const auto v0 = hn::Load(d, block.v[0][a] + c), v1 = hn::Load(d, block.v[1][a] + c),
+                   v2 = hn::Load(d, block.v[2][a] + c);
+        hn::Store(hn::Min(v0, hn::Min(v1, v2)), d, lo[a] + c);
+        hn::Store(hn::Max(v0, hn::Max(v1, v2)), d, hi[a] + c);
+      }
+    const float* const los[3] = {lo[0], lo[1], lo[2]};
+    const float* const his[3] = {hi[0], hi[1], hi[2]};
+    return maybeEntered(los, his, enter) & ((1u << count) - 1);
   }
 
   // Lane i walks the subtree alone, with its own closest-hit state.
@@ -217,34 +260,37 @@ class RayPacket {
     bound_[i] = hits_[i].bound();
   }
 
-  // Each child box against the packet's active rays (rays in lanes, one box broadcast); the
-  // children some ray enters go on the stack, farthest first. Returns the new top.
+  // Each child box against the active rays (rays in lanes, one box broadcast); the children
+  // some ray enters go on the stack, farthest first. Returns the new top.
   template <bool kFinite>
-  int expand(const BvhNode& n, const float* dist, Entry* stack, int top) const {
+  int expand(const BvhNode& n, std::uint32_t lanes, Entry* stack, int top) const {
     const D d;
     const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const auto zero = hn::Zero(d);
     Entry kids[BvhNode::kWidth];
     int count = 0;
-    const float* lo[3] = {n.minX, n.minY, n.minZ};
-    const float* hi[3] = {n.maxX, n.maxY, n.maxZ};
-    std::uint32_t candidates = ~0u;
-    if constexpr (kFinite)
-      if (cull_) candidates = maybeEntered(n);
-    for (int k = 0; k < BvhNode::kWidth; ++k) {
-      if (n.child[k] == BvhNode::kEmpty || !((candidates >> k) & 1)) continue;
-      Entry& kid = kids[count];
-      bool any = false;
+    const float* const lo[3] = {n.minX, n.minY, n.minZ};
+    const float* const hi[3] = {n.maxX, n.maxY, n.maxZ};
+    alignas(32) float enter8[BvhNode::kWidth];
+    std::uint32_t candidates = 0;
+    for (int k = 0; k < BvhNode::kWidth; ++k)
+      candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
+    const bool cull = kFinite && cull_;
+    if (cull) candidates &= maybeEntered(lo, hi, enter8);
+    for (; candidates != 0; candidates &= candidates - 1) {
+      const int k = __builtin_ctz(candidates);
+      std::uint32_t entered = 0;
       auto key = inf;
       for (std::size_t h = 0; h < N; h += kLanes) {
+        const auto active = maskOf(lanes, h);
+        if (hn::AllFalse(d, active)) continue;
         const auto bound = hn::Load(d, bound_ + h);
-        const auto active = hn::Le(hn::LoadU(d, dist + h), bound);
         hn::Vec<D> origin[3], inverse[3], enter;
         for (int a = 0; a < 3; ++a)
           origin[a] = hn::Load(d, origin_[a] + h), inverse[a] = hn::Load(d, inverse_[a] + h);
         // The near face by the sign bit of the direction (that of its inverse, -0 giving -inf),
-        // per lane, as RayCore picks it per ray.
-        // A packet in one octant (cull_) has the same faces in every lane.
+        // per lane, as RayCore picks it per ray. A packet in one octant (cull_) has the same
+        // faces in every lane.
         auto faces = [&](int a, hn::Vec<D>& nearFace, hn::Vec<D>& farFace) {
           const auto boxLo = hn::Set(d, lo[a][k]), boxHi = hn::Set(d, hi[a][k]);
           if (cull_) {
@@ -256,17 +302,12 @@ class RayPacket {
           farFace = hn::IfThenElse(negative, boxLo, boxHi);
         };
         const auto hit = hn::And(active, raySlab<kFinite>(d, faces, origin, inverse, bound, enter));
-        const auto kept = hn::IfThenElse(hit, enter, inf);
-        hn::StoreU(kept, d, kid.dist + h);
-        if (hn::AllFalse(d, hit)) continue;
-        any = true;
-        key = hn::Min(key, hn::MinOfLanes(d, kept));
+        entered |= bitsOf(hit) << h;
+        if (!cull) key = hn::Min(key, hn::MinOfLanes(d, hn::IfThenElse(hit, enter, inf)));
       }
-      if (!any) continue;
-      kid.ref = n.child[k];
-      kid.key = hn::GetLane(key);
-      prefetch(mesh_, kid.ref);
-      ++count;
+      if (entered == 0) continue;
+      kids[count++] = {n.child[k], cull ? enter8[k] : hn::GetLane(key), entered};
+      prefetchAll(mesh_, n.child[k]);
     }
     // Insertion sort by key onto the stack, farthest first: the nearest is popped next.
     const int base = top;
@@ -281,21 +322,25 @@ class RayPacket {
   // The leaf's triangles against the active rays, one triangle broadcast across the rays. The
   // shear's axes differ between rays of different dominant axes, so rays are taken a frame at a
   // time (coherent packets have one): each lane then runs the scalar test's operations.
-  void leaf(std::uint32_t ref, const float* dist) {
+  void leaf(std::uint32_t ref, std::uint32_t lanes) {
     const D d;
     const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
     const std::uint32_t count = BvhNode::leafCount(ref);
+    const std::uint32_t triangles = cull_ ? maybeHit(block, count) : (1u << count) - 1;
+    if (triangles == 0) return;
     for (std::uint32_t frames = frames_; frames != 0; frames &= frames - 1) {
       const int frame = __builtin_ctz(frames);
+      const std::uint32_t inFrame = lanes & frameLanes_[frame];
+      if (inFrame == 0) continue;
       const int kz = frame / 2;
       int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
       if (frame & 1) std::swap(kx, ky);
-      for (std::uint32_t l = 0; l < count; ++l) {
+      for (std::uint32_t m = triangles; m != 0; m &= m - 1) {
+        const int l = __builtin_ctz(m);
         for (std::size_t h = 0; h < N; h += kLanes) {
+          if (((inFrame >> h) & ((1u << kLanes) - 1)) == 0) continue;
+          const auto active = maskOf(inFrame, h);
           const auto bound = hn::Load(d, bound_ + h);
-          const auto lanes = hn::And(hn::Le(hn::LoadU(d, dist + h), bound),
-                                     hn::Eq(hn::Load(d, frame_ + h), hn::Set(d, float(frame))));
-          if (hn::AllFalse(d, lanes)) continue;
           const auto sx = hn::Load(d, sx_ + h), sy = hn::Load(d, sy_ + h);
           auto relative = [&](int q, int k) {
             return hn::Sub(hn::Set(d, block.v[q][k][l]), hn::Load(d, origin_[k] + h));
@@ -308,13 +353,11 @@ class RayPacket {
           }
           hn::Vec<D> t;
           const auto hit =
-              hn::And(lanes, watertightSheared(d, px, py, pz, hn::Load(d, sz_ + h), bound, t));
+              hn::And(active, watertightSheared(d, px, py, pz, hn::Load(d, sz_ + h), bound, t));
           if (hn::AllFalse(d, hit)) continue;
           alignas(64) float ts[kLanes];
           hn::Store(t, d, ts);
-          std::uint8_t bits[8] = {};
-          hn::StoreMaskBits(d, hit, bits);
-          for (unsigned m = unsigned(bits[0]) | unsigned(bits[1]) << 8; m != 0; m &= m - 1) {
+          for (std::uint32_t m = bitsOf(hit); m != 0; m &= m - 1) {
             const std::size_t i = h + std::size_t(__builtin_ctz(m));
             hits_[i].offer(ts[i - h], block.id[l]);
             bound_[i] = hits_[i].bound();
@@ -333,8 +376,10 @@ class RayPacket {
   alignas(64) float origin_[3][N];
   alignas(64) float inverse_[3][N];
   alignas(64) float sx_[N], sy_[N], sz_[N];
-  alignas(64) float frame_[N];  // 2 kz + (kx, ky swapped), as a float for a float compare
-  std::uint32_t frames_ = 0;    // the frames present, as bits
+  alignas(64) float frame_[N];        // 2 kz + (kx, ky swapped)
+  std::uint32_t present_ = 0;         // the lanes with a ray, as bits
+  std::uint32_t frames_ = 0;          // the frames present, as bits
+  std::uint32_t frameLanes_[6] = {};  // per frame, its lanes
   bool finite_ = true;
   // The packet's bounds (bound()): whether they cull, and per axis the direction's sign, the
   // origins' and inverses' least and most.

@@ -40,6 +40,16 @@ HWY_INLINE void prefetch(const MeshView& mesh, std::uint32_t ref) {
     hwy::Prefetch(mesh.nodes + ref);
 }
 
+// All of it: a packet tests every line of what it visits.
+HWY_INLINE void prefetchAll(const MeshView& mesh, std::uint32_t ref) {
+  const char* p = BvhNode::isLeaf(ref)
+                      ? reinterpret_cast<const char*>(mesh.blocks + BvhNode::leafFirst(ref) /
+                                                                        TriangleBlock::kWidth)
+                      : reinterpret_cast<const char*>(mesh.nodes + ref);
+  const std::size_t size = BvhNode::isLeaf(ref) ? sizeof(TriangleBlock) : sizeof(BvhNode);
+  for (std::size_t line = 0; line < size; line += 64) hwy::Prefetch(p + line);
+}
+
 // kFinite: the ray's inverse direction is finite on every axis (the common case), so no slab
 // product is NaN and plain Min/Max bound the interval.
 template <class Sink, bool kFinite>
