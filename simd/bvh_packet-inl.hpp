@@ -272,11 +272,12 @@ class RayPacket {
     const float* const lo[3] = {n.minX, n.minY, n.minZ};
     const float* const hi[3] = {n.maxX, n.maxY, n.maxZ};
     alignas(32) float enter8[BvhNode::kWidth];
-    std::uint32_t candidates = 0;
-    for (int k = 0; k < BvhNode::kWidth; ++k)
-      candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
     const bool cull = kFinite && cull_;
-    if (cull) candidates &= maybeEntered(lo, hi, enter8);
+    // An empty slot's inverted box fails the pre-test.
+    std::uint32_t candidates = cull ? maybeEntered(lo, hi, enter8) : 0;
+    if (!cull)
+      for (int k = 0; k < BvhNode::kWidth; ++k)
+        candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
     for (; candidates != 0; candidates &= candidates - 1) {
       const int k = __builtin_ctz(candidates);
       std::uint32_t entered = 0;
