@@ -75,12 +75,12 @@ void BvhBin(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& f
   BvhBins sets[2];
   for (BvhBins& set : sets)
     for (int a = 0; a < 3; ++a)
-      for (int k = 0; k < kBvhBins; ++k) {
+      for (int k = 0; k < frame.bins; ++k) {
         std::fill_n(set.box[a][k].lo, 4, kInf);
         std::fill_n(set.box[a][k].hi, 4, -kInf);
         set.count[a][k] = 0;
       }
-  const V top = hn::Set(d, float(kBvhBins - 1));
+  const V top = hn::Set(d, float(frame.bins - 1));
   auto bin = [&](const detail::BvhPrimRef& ref, BvhBins& set) HWY_ATTR {
     const Prim p(ref);
     alignas(16) std::int32_t index[4];
@@ -108,7 +108,7 @@ void BvhBin(const detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& f
   for (; i + 1 < n; i += 2) bin(prims[i], sets[0]), bin(prims[i + 1], sets[1]);
   if (i < n) bin(prims[i], sets[0]);
   for (int a = 0; a < 3; ++a)
-    for (int k = 0; k < kBvhBins; ++k) {
+    for (int k = 0; k < frame.bins; ++k) {
       const BvhBox &b0 = sets[0].box[a][k], &b1 = sets[1].box[a][k];
       for (std::size_t c = 0; c < kChunks; ++c) {
         const std::size_t l = c * kLanes;
@@ -126,7 +126,7 @@ void BvhPartition(detail::BvhPrimRef* prims, std::size_t n, const BvhBinFrame& f
   // The binning kernel's operations on one lane, so a primitive goes to the side its bin says.
   auto goesLeft = [&](const detail::BvhPrimRef& p) {
     const float x = scale > 0 ? (p.centroid(axis) - origin) * scale : 0.0f;
-    return int(std::min(std::max(x, 0.0f), float(kBvhBins - 1))) < split;
+    return int(std::min(std::max(x, 0.0f), float(frame.bins - 1))) < split;
   };
   Bounds left, right;
   std::size_t i = 0, j = n;

@@ -123,10 +123,11 @@ struct alignas(16) BvhBox {
 };
 inline constexpr int kBvhBins = 16;
 // The bins of a range: on axis a, a primitive goes to bin
-// clamp(int((centroid(a) - origin[a]) * scale[a]), 0, kBvhBins - 1), a scale of 0 putting all in
+// clamp(int((centroid(a) - origin[a]) * scale[a]), 0, bins - 1), a scale of 0 putting all in
 // bin 0 (a NaN from an infinite centroid included).
 struct BvhBinFrame {
   float origin[3], scale[3];
+  int bins = kBvhBins;  // the bins in use, 2 to kBvhBins
 };
 struct BvhBins {
   BvhBox box[3][kBvhBins];

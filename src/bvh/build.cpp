@@ -180,15 +180,19 @@ class Builder {
   // Binned SAH over the three axes: one pass fills the bins, a second partitions the range.
   std::optional<std::pair<Range, Range>> sahSplit(const Range& r) {
     simd::BvhBinFrame frame{};
+    // Embree's bin count, 4 + N / 20 up to the most: small ranges pay for fewer bins to clear,
+    // merge and sweep, and lose little choice.
+    const int bins = int(std::min<std::uint32_t>(kBins, 4 + r.count() / 20));
+    frame.bins = bins;
     for (int a = 0; a < 3; ++a) {
       const float extent = r.cbox.hi[a] - r.cbox.lo[a];
-      const float scale = kBins * (1 - 1e-6f) / extent;
+      const float scale = float(bins) * (1 - 1e-6f) / extent;
       frame.origin[a] = r.cbox.lo[a];
       // An extent below 16 / FLT_MAX would give an infinite scale, and 0 * inf a NaN: not split on.
       frame.scale[a] = extent > 0 && scale < kInf ? scale : 0;
     }
-    simd::BvhBins bins;
-    simd::bvhBin(prims_.data() + r.begin, r.count(), frame, bins);
+    simd::BvhBins binned;
+    simd::bvhBin(prims_.data() + r.begin, r.count(), frame, binned);
     float bestCost = kInf;
     int bestAxis = -1, bestBin = 0;
     for (int a = 0; a < 3; ++a) {
@@ -197,16 +201,16 @@ class Builder {
       std::array<float, kBins> rightCost{};
       Bounds acc;
       std::uint32_t n = 0;
-      for (int k = kBins - 1; k > 0; --k) {
-        acc.grow(bins.box[a][k]);
-        n += bins.count[a][k];
+      for (int k = bins - 1; k > 0; --k) {
+        acc.grow(binned.box[a][k]);
+        n += binned.count[a][k];
         rightCost[k] = n ? acc.halfArea() * float(n) : kInf;
       }
       acc = {};
       n = 0;
-      for (int k = 1; k < kBins; ++k) {
-        acc.grow(bins.box[a][k - 1]);
-        n += bins.count[a][k - 1];
+      for (int k = 1; k < bins; ++k) {
+        acc.grow(binned.box[a][k - 1]);
+        n += binned.count[a][k - 1];
         float cost = n ? acc.halfArea() * float(n) + rightCost[k] : kInf;
         if (cost < bestCost) bestCost = cost, bestAxis = a, bestBin = k;
       }
