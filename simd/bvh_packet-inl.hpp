@@ -118,10 +118,17 @@ class RayPacket {
       p_.leaf(e.ref, lanes_);
       return false;
     }
-    // Children are pushed, not visited at once: each popped entry takes the hybrid switch.
-    bool expand(const BvhNode& n, Entry&, Entry* stack, int& top) {
+    // The nearest child is visited at once when enough lanes enter it (the walk's own pop
+    // would find the same lanes); otherwise it is popped and takes the hybrid switch.
+    bool expand(const BvhNode& n, Entry& e, Entry* stack, int& top) {
+      const int base = top;
       top = p_.template expand<kFinite>(n, lanes_, stack, top);
-      return false;
+      if (top == base) return false;
+      const std::uint32_t lanes = stack[top - 1].lanes & p_.within(stack[top - 1].key);
+      if (__builtin_popcount(lanes) <= kSwitchThreshold) return false;
+      e = stack[--top];
+      lanes_ = lanes;
+      return true;
     }
 
    private:
