@@ -240,10 +240,10 @@ class RayPacket {
   // could hit.
   std::uint32_t maybeHit(const TriangleBlock& block, std::uint32_t count) const {
     const hn::CappedTag<float, BvhNode::kWidth> d;
-    constexpr std::size_t kRow = hn::MaxLanes(d);
+    constexpr std::size_t kBoxes = hn::MaxLanes(d);
     alignas(32) float lo[3][BvhNode::kWidth], hi[3][BvhNode::kWidth], enter[BvhNode::kWidth];
     for (int a = 0; a < 3; ++a)
-      for (std::size_t c = 0; c < std::size_t(BvhNode::kWidth); c += kRow) {
+      for (std::size_t c = 0; c < std::size_t(BvhNode::kWidth); c += kBoxes) {
         const auto v0 = hn::Load(d, block.v[0][a] + c), v1 = hn::Load(d, block.v[1][a] + c),
                    v2 = hn::Load(d, block.v[2][a] + c);
         hn::Store(hn::Min(v0, hn::Min(v1, v2)), d, lo[a] + c);
@@ -365,8 +365,8 @@ class RayPacket {
           if (hn::AllFalse(d, hit)) continue;
           alignas(64) float ts[kLanes];
           hn::Store(t, d, ts);
-          for (std::uint32_t m = bitsOf(hit); m != 0; m &= m - 1) {
-            const std::size_t i = h + std::size_t(__builtin_ctz(m));
+          for (std::uint32_t lane = bitsOf(hit); lane != 0; lane &= lane - 1) {
+            const std::size_t i = h + std::size_t(__builtin_ctz(lane));
             hits_[i].offer(ts[i - h], block.id[l]);
             bound_[i] = hits_[i].bound();
           }

@@ -1,13 +1,13 @@
 // Box queries against the wide BVH: one SIMD comparison per row tests all 8 children of a node.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "simd/bvh_query.cpp"
-#include <hwy/cache_control.h>
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include <cstdint>
 #include <limits>
 
+#include "core/prefetch.hpp"
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
 #include "simdphys/bvh_types.hpp"
@@ -40,18 +40,13 @@ class OverlapWalk : public NodeWalk {
       const int pushed = top;
       top += int(compressStore32(du_, child, hn::AndNot(leaf, hit), stack + top));
       // Large trees miss the cache: fetch the children now, while the siblings are tested.
-      for (int s = pushed; s < top; ++s) prefetchNode(nodes_ + stack[s]);
+      for (int s = pushed; s < top; ++s) core::prefetchLines(nodes_ + stack[s], sizeof(BvhNode));
       sink_(du_, child, hn::And(leaf, hit));
     }
     return false;
   }
 
  private:
-  static void prefetchNode(const BvhNode* n) {
-    const char* p = reinterpret_cast<const char*>(n);
-    for (std::size_t line = 0; line < sizeof(BvhNode); line += 64) hwy::Prefetch(p + line);
-  }
-
   using D = hn::CappedTag<float, BvhNode::kWidth>;
   static constexpr D d_{};
   static constexpr hn::RebindToUnsigned<D> du_{};

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/prefetch.hpp"
 #include "core/traversal_ray.hpp"
 #include "simd/export.hpp"
 #include "simd/kernels.hpp"
@@ -42,12 +43,11 @@ HWY_INLINE void prefetch(const MeshView& mesh, std::uint32_t ref) {
 
 // All of it: a packet tests every line of what it visits.
 HWY_INLINE void prefetchAll(const MeshView& mesh, std::uint32_t ref) {
-  const char* p = BvhNode::isLeaf(ref)
-                      ? reinterpret_cast<const char*>(mesh.blocks + BvhNode::leafFirst(ref) /
-                                                                        TriangleBlock::kWidth)
-                      : reinterpret_cast<const char*>(mesh.nodes + ref);
-  const std::size_t size = BvhNode::isLeaf(ref) ? sizeof(TriangleBlock) : sizeof(BvhNode);
-  for (std::size_t line = 0; line < size; line += 64) hwy::Prefetch(p + line);
+  if (BvhNode::isLeaf(ref))
+    core::prefetchLines(mesh.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth,
+                        sizeof(TriangleBlock));
+  else
+    core::prefetchLines(mesh.nodes + ref, sizeof(BvhNode));
 }
 
 // kFinite: the ray's inverse direction is finite on every axis (the common case), so no slab

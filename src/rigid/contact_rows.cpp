@@ -3,6 +3,7 @@
 
 #include <tuple>
 
+#include "core/prefetch.hpp"
 #include "simd/kernels.hpp"
 
 namespace simdphys::detail {
@@ -67,8 +68,7 @@ void KernelPasses::prepare(const std::vector<ContactConstraintT<float>>& contact
     const ContactConstraintT<float>& c = contacts[i];
     // A batch's contacts lie apart in `contacts`: the one a few lanes on fetched meanwhile.
     if (lane + kAhead < lanes_ && contactAt[lane + kAhead] != kPadding) {
-      const char* ahead = reinterpret_cast<const char*>(&contacts[contactAt[lane + kAhead]]);
-      for (std::size_t line = 0; line < sizeof(c); line += 64) __builtin_prefetch(ahead + line);
+      core::prefetchLines(&contacts[contactAt[lane + kAhead]], sizeof(c));
     }
     a_[lane] = c.a, b_[lane] = c.b;
     for (int k = 0; k < 3; ++k) {

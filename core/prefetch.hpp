@@ -1,0 +1,17 @@
+// Prefetching a whole object, for what a walk or a gather is about to read in full: the hardware
+// prefetcher does not follow the jumps between nodes, blocks or constraint records.
+#pragma once
+
+#include <cstddef>
+
+namespace simdphys::core {
+
+inline constexpr std::size_t kCacheLine = 64;
+
+// Every cache line of the `bytes` bytes at p.
+inline void prefetchLines(const void* p, std::size_t bytes) {
+  const char* c = static_cast<const char*>(p);
+  for (std::size_t line = 0; line < bytes; line += kCacheLine) __builtin_prefetch(c + line);
+}
+
+}  // namespace simdphys::core
