@@ -53,8 +53,10 @@ class RayPacket {
         hn::Store(inverse, d, inverse_[a] + h);
         finite = finite && hn::AllTrue(d, hn::IsFinite(inverse));
       }
-      hn::Store(gather(R::tMax, hn::Set(d, -std::numeric_limits<float>::infinity())), d,
-                bound_ + h);
+      const auto tMax = gather(R::tMax, hn::Set(d, -std::numeric_limits<float>::infinity()));
+      hn::Store(tMax, d, bound_ + h);
+      hn::Store(tMax, d, tMax_ + h);
+      hn::Store(hn::Set(d, std::numeric_limits<float>::infinity()), d, tMin_ + h);
       const auto dx = direction[0], dy = direction[1], dz = direction[2];
       // kz: the first axis of largest |d|; kx, ky the next two, swapped for a negative d[kz].
       const auto y = hn::Gt(hn::Abs(dy), hn::Abs(dx));
@@ -71,7 +73,6 @@ class RayPacket {
       // Absent lanes' inverses are 1: only present lanes can make the packet infinite.
       finite_ = finite_ && finite;
     }
-    for (std::size_t i = 0; i < N; ++i) hits_[i] = Closest(bound_[i]);
     for (std::uint32_t m = present_; m != 0; m &= m - 1) {
       const int i = __builtin_ctz(m), frame = int(frame_[i]);
       frames_ |= 1u << frame;
@@ -88,7 +89,9 @@ class RayPacket {
       trace<false>();
     for (std::uint32_t m = present_; m != 0; m &= m - 1) {
       const int i = __builtin_ctz(m);
-      out[index_[i]] = hits_[i].result();
+      out[index_[i]] = (owned_ >> i & 1)   ? hits_[i].result()
+                       : (found_ >> i & 1) ? ElementHit{id_[i], tMin_[i]}
+                                           : ElementHit{};
     }
   }
 
@@ -254,17 +257,29 @@ class RayPacket {
     return maybeEntered(los, his, enter) & ((1u << count) - 1);
   }
 
+  // Lane i's hits as a ClosestHits from now on (it walks alone, or met a tie): the one hit its
+  // rows held offered to a fresh one, which is the state that offer left in it.
+  Closest& own(int i) {
+    if (!(owned_ >> i & 1)) {
+      owned_ |= 1u << i;
+      hits_[i] = Closest(tMax_[i]);
+      if (found_ >> i & 1) hits_[i].offer(tMin_[i], id_[i]);
+    }
+    return hits_[i];
+  }
+
   // Lane i walks the subtree alone, with its own closest-hit state.
   void single(int i, std::uint32_t ref) {
     const detail::TraversalRay ray = detail::traversalRay(rays_, index_[i]);
+    Closest& hits = own(i);
     if (ray.finiteInverse) {
-      RayCore<Closest, true> core(mesh_, ray, hits_[i]);
+      RayCore<Closest, true> core(mesh_, ray, hits);
       traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
     } else {
-      RayCore<Closest, false> core(mesh_, ray, hits_[i]);
+      RayCore<Closest, false> core(mesh_, ray, hits);
       traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
     }
-    bound_[i] = hits_[i].bound();
+    bound_[i] = hits.bound();
   }
 
   // Each child box against the active rays (rays in lanes, one box broadcast); the children
@@ -329,13 +344,19 @@ class RayPacket {
 
   // The leaf's triangles against the active rays, one triangle broadcast across the rays. The
   // shear's axes differ between rays of different dominant axes, so rays are taken a frame at a
-  // time (coherent packets have one): each lane then runs the scalar test's operations.
+  // time (coherent packets have one): each lane then runs the scalar test's operations. Every
+  // triangle is tested against the bounds the leaf started with (the rule does not depend on the
+  // order hits are offered); then a lane with one hit, no hit held or one its window drops, keeps
+  // it in the rows, and the others offer theirs to their own ClosestHits.
   void leaf(std::uint32_t ref, std::uint32_t lanes) {
     const D d;
+    const hn::RebindToUnsigned<D> du;
     const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
     const std::uint32_t count = BvhNode::leafCount(ref);
     const std::uint32_t triangles = cull_ ? maybeHit(block, count) : (1u << count) - 1;
     if (triangles == 0) return;
+    const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
+    const auto none = hn::Set(d, std::numeric_limits<float>::quiet_NaN());
     for (std::uint32_t frames = frames_; frames != 0; frames &= frames - 1) {
       const int frame = __builtin_ctz(frames);
       const std::uint32_t inFrame = lanes & frameLanes_[frame];
@@ -343,13 +364,18 @@ class RayPacket {
       const int kz = frame / 2;
       int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
       if (frame & 1) std::swap(kx, ky);
-      for (std::uint32_t m = triangles; m != 0; m &= m - 1) {
-        const int l = __builtin_ctz(m);
-        for (std::size_t h = 0; h < N; h += kLanes) {
-          if (((inFrame >> h) & ((1u << kLanes) - 1)) == 0) continue;
-          const auto active = maskOf(inFrame, h);
-          const auto bound = hn::Load(d, bound_ + h);
-          const auto sx = hn::Load(d, sx_ + h), sy = hn::Load(d, sy_ + h);
+      for (std::size_t h = 0; h < N; h += kLanes) {
+        if (((inFrame >> h) & ((1u << kLanes) - 1)) == 0) continue;
+        const auto active = maskOf(inFrame, h);
+        const auto bound = hn::Load(d, bound_ + h);
+        const auto sx = hn::Load(d, sx_ + h), sy = hn::Load(d, sy_ + h), sz = hn::Load(d, sz_ + h);
+        // Per triangle, its t where a lane hits it and NaN elsewhere; per lane, the nearest hit.
+        alignas(64) float ts[TriangleBlock::kWidth][kLanes];
+        auto seen = hn::FirstN(d, 0), several = seen;
+        auto nearest = inf;
+        auto nearestId = hn::Zero(du);
+        for (std::uint32_t m = triangles; m != 0; m &= m - 1) {
+          const int l = __builtin_ctz(m);
           auto relative = [&](int q, int k) {
             return hn::Sub(hn::Set(d, block.v[q][k][l]), hn::Load(d, origin_[k] + h));
           };
@@ -360,16 +386,40 @@ class RayPacket {
             py[q] = hn::Sub(relative(q, ky), hn::Mul(sy, pz[q]));
           }
           hn::Vec<D> t;
-          const auto hit =
-              hn::And(active, watertightSheared(d, px, py, pz, hn::Load(d, sz_ + h), bound, t));
-          if (hn::AllFalse(d, hit)) continue;
-          alignas(64) float ts[kLanes];
-          hn::Store(t, d, ts);
-          for (std::uint32_t lane = bitsOf(hit); lane != 0; lane &= lane - 1) {
-            const std::size_t i = h + std::size_t(__builtin_ctz(lane));
-            hits_[i].offer(ts[i - h], block.id[l]);
-            bound_[i] = hits_[i].bound();
+          const auto hit = hn::And(active, watertightSheared(d, px, py, pz, sz, bound, t));
+          hn::Store(hn::IfThenElse(hit, t, none), d, ts[l]);
+          several = hn::Or(several, hn::And(hit, seen));
+          seen = hn::Or(seen, hit);
+          const auto nearer = hn::And(hit, hn::Lt(t, nearest));
+          nearest = hn::IfThenElse(nearer, t, nearest);
+          nearestId =
+              hn::IfThenElse(hn::RebindMask(du, nearer), hn::Set(du, block.id[l]), nearestId);
+        }
+        if (hn::AllFalse(d, seen)) continue;
+        const auto tMin = hn::Load(d, tMin_ + h);
+        const auto found = maskOf(found_, h);
+        const auto window =
+            hn::Min(hn::Mul(nearest, hn::Set(d, kTieWindow)), hn::Load(d, tMax_ + h));
+        // ClosestHits::offer's outcome for one hit: held alone when nothing was, or when it is
+        // nearer and the window it sets leaves out the hit held.
+        const auto alone = hn::AndNot(hn::Or(several, maskOf(owned_, h)), seen);
+        const auto keep = hn::And(
+            alone, hn::Or(hn::Not(found), hn::And(hn::Lt(nearest, tMin), hn::Gt(tMin, window))));
+        hn::Store(hn::IfThenElse(keep, nearest, tMin), d, tMin_ + h);
+        hn::Store(hn::IfThenElse(keep, window, bound), d, bound_ + h);
+        hn::Store(hn::IfThenElse(hn::RebindMask(du, keep), nearestId, hn::Load(du, id_ + h)), du,
+                  id_ + h);
+        const std::uint32_t kept = bitsOf(keep) << h;
+        found_ |= kept;
+        for (std::uint32_t rest = (bitsOf(seen) << h) & ~kept; rest != 0; rest &= rest - 1) {
+          const int i = __builtin_ctz(rest);
+          Closest& hits = own(i);
+          for (std::uint32_t m = triangles; m != 0; m &= m - 1) {
+            const int l = __builtin_ctz(m);
+            const float t = ts[l][std::size_t(i) - h];
+            if (t == t) hits.offer(t, block.id[l]);
           }
+          bound_[i] = hits.bound();
         }
       }
     }
@@ -378,9 +428,13 @@ class RayPacket {
   const MeshView& mesh_;
   const RaysView& rays_;
   const std::uint32_t* index_;
-  // Per lane: its closest-hit state, and what the packet tests read.
-  Closest hits_[N];
+  // Per lane: its closest hit in rows while it holds at most one (found_: one, at tMin_ with id_),
+  // else in hits_ (owned_), and what the packet tests read.
   alignas(64) float bound_[N];
+  alignas(64) float tMax_[N], tMin_[N];
+  alignas(64) std::uint32_t id_[N] = {};
+  std::uint32_t found_ = 0, owned_ = 0;
+  Closest hits_[N];
   alignas(64) float origin_[3][N];
   alignas(64) float inverse_[3][N];
   alignas(64) float sx_[N], sy_[N], sz_[N];
