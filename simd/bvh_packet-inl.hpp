@@ -386,7 +386,7 @@ class RayPacket {
             py[q] = hn::Sub(relative(q, ky), hn::Mul(sy, pz[q]));
           }
           hn::Vec<D> t;
-          const auto hit = hn::And(active, watertightSheared(d, px, py, pz, sz, bound, t));
+          const auto hit = hn::And(active, watertightSheared<false>(d, px, py, pz, sz, bound, t));
           hn::Store(hn::IfThenElse(hit, t, none), d, ts[l]);
           several = hn::Or(several, hn::And(hit, seen));
           seen = hn::Or(seen, hit);
