@@ -146,16 +146,26 @@ class RayPacket {
     walkBvh(mesh_.nodes, mesh_.nodeCount, walk, Entry{0, 0.0f, present_});
   }
 
-  // A mask's lanes as the low bits of an integer.
-  static std::uint32_t bitsOf(hn::Mask<D> m) {
+  // A mask's lanes as the low bits of an integer (of at most 16 lanes). AVX-512's masks are
+  // those bits already, where StoreMaskBits would pass them through memory.
+  template <class DM = D>
+  static std::uint32_t bitsOf(hn::Mask<DM> m) {
+#if HWY_TARGET <= HWY_AVX3
+    return std::uint32_t(m.raw) & ((1u << hn::MaxLanes(DM())) - 1);
+#else
     std::uint8_t b[8] = {};
-    hn::StoreMaskBits(D(), m, b);
+    hn::StoreMaskBits(DM(), m, b);
     return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8;
+#endif
   }
   // Lanes h.. of a lane set, as a mask.
   static hn::Mask<D> maskOf(std::uint32_t lanes, std::size_t h) {
+#if HWY_TARGET <= HWY_AVX3
+    return hn::Mask<D>{static_cast<typename hn::Mask<D>::Raw>(lanes >> h)};
+#else
     std::uint8_t b[8] = {std::uint8_t(lanes >> h), std::uint8_t(lanes >> h >> 8)};
     return hn::LoadMaskBits(D(), b);
+#endif
   }
 
   // The lanes whose bound is at least t, as bits.
@@ -230,9 +240,8 @@ class RayPacket {
       }
       enter = hn::Mul(enter, hn::Set(d, detail::kEnterScale));
       hn::StoreU(enter, d, enterOut + c);
-      std::uint8_t b[8] = {};
-      hn::StoreMaskBits(d, hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale))), b);
-      bits |= std::uint32_t(b[0]) << c;
+      bits |= bitsOf<decltype(d)>(hn::Le(enter, hn::Mul(exit, hn::Set(d, detail::kExitScale))))
+              << c;
     }
     return bits;
   }
