@@ -29,18 +29,16 @@ class RayPacket {
   RayPacket(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index)
       : mesh_(mesh), rays_(rays), index_(index) {
     using R = fields::Ray;
-    std::uint32_t first = 0;
-    for (std::size_t i = N; i-- > 0;)
-      if (index[i] != kAbsentLane) present_ |= 1u << i, first = index[i];
     const D d;
     const DI di;
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
     for (std::size_t h = 0; h < N; h += kLanes) {
-      // Absent lanes read the first present ray (any valid index) and take neutral values: bound
-      // -inf (no box or triangle passes it) and direction 1 (a finite inverse).
+      // Absent lanes read ray 0 (a packet has a ray, so the stream does) and take neutral
+      // values: bound -inf (no box or triangle passes it) and direction 1 (a finite inverse).
       const auto raw = hn::BitCast(di, hn::LoadU(hn::RebindToUnsigned<D>(), index + h));
       const auto here = hn::RebindMask(d, hn::Ne(raw, hn::Set(di, -1)));
-      const auto at = hn::IfThenElse(hn::RebindMask(di, here), raw, hn::Set(di, int(first)));
+      const auto at = hn::IfThenElse(hn::RebindMask(di, here), raw, hn::Zero(di));
+      present_ |= bitsOf(here) << h;
       auto gather = [&](std::size_t f, hn::Vec<D> absent) {
         return hn::IfThenElse(here, hn::GatherIndex(d, rays[f], at), absent);
       };
@@ -69,15 +67,13 @@ class RayPacket {
       hn::Store(hn::Div(hn::IfThenElse(swapped, next, last), along), d, sy_ + h);
       hn::Store(hn::Div(one, along), d, sz_ + h);
       const auto kz = hn::IfThenElse(z, hn::Set(d, 2.0f), hn::IfThenElse(y, one, zero));
-      hn::Store(hn::Add(hn::Add(kz, kz), hn::IfThenElse(swapped, one, zero)), d, frame_ + h);
+      const auto frame = hn::Add(hn::Add(kz, kz), hn::IfThenElse(swapped, one, zero));
+      for (int f = 0; f < 6; ++f)
+        frameLanes_[f] |= bitsOf(hn::And(here, hn::Eq(frame, hn::Set(d, float(f))))) << h;
       // Absent lanes' inverses are 1: only present lanes can make the packet infinite.
       finite_ = finite_ && finite;
     }
-    for (std::uint32_t m = present_; m != 0; m &= m - 1) {
-      const int i = __builtin_ctz(m), frame = int(frame_[i]);
-      frames_ |= 1u << frame;
-      frameLanes_[frame] |= 1u << i;
-    }
+    for (int f = 0; f < 6; ++f) frames_ |= std::uint32_t(frameLanes_[f] != 0) << f;
     bound();
   }
 
@@ -447,7 +443,6 @@ class RayPacket {
   alignas(64) float origin_[3][N];
   alignas(64) float inverse_[3][N];
   alignas(64) float sx_[N], sy_[N], sz_[N];
-  alignas(64) float frame_[N];        // 2 kz + (kx, ky swapped)
   std::uint32_t present_ = 0;         // the lanes with a ray, as bits
   std::uint32_t frames_ = 0;          // the frames present, as bits
   std::uint32_t frameLanes_[6] = {};  // per frame, its lanes
