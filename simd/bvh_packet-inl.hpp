@@ -24,10 +24,10 @@ class RayPacket {
  public:
   // Lane i traces ray index[i] of `rays` (kAbsentLane: none). The rays are gathered and set up
   // across the lanes with traversalRay's operations (core/traversal_ray.hpp: the same divisions
-  // and choices, so the same values bit for bit); a lane that walks alone (single()) takes its
-  // TraversalRay from the stream then.
+  // and choices, so the same values bit for bit), which a lane that walks alone (single()) then
+  // takes as its TraversalRay.
   RayPacket(const MeshView& mesh, const RaysView& rays, const std::uint32_t* index)
-      : mesh_(mesh), rays_(rays), index_(index) {
+      : mesh_(mesh), index_(index) {
     using R = fields::Ray;
     const D d;
     const DI di;
@@ -273,9 +273,29 @@ class RayPacket {
     return hits_[i];
   }
 
+  // Lane i's ray as the single-ray walk takes it, from the lanes (traversalRay's values, set up
+  // across the lanes with its operations) rather than from the stream again.
+  detail::TraversalRay traversalRay(int i) const {
+    detail::TraversalRay r;
+    int frame = 0;
+    while (!(frameLanes_[frame] >> i & 1)) ++frame;
+    r.kz = frame / 2, r.kx = (r.kz + 1) % 3, r.ky = (r.kx + 1) % 3;
+    if (frame & 1) std::swap(r.kx, r.ky);
+    r.ox = origin_[0][i], r.oy = origin_[1][i], r.oz = origin_[2][i];
+    r.sx = sx_[i], r.sy = sy_[i], r.sz = sz_[i];
+    r.tMax = tMax_[i];
+    r.finiteInverse = true;
+    for (int a = 0; a < 3; ++a) {
+      r.origin[a] = origin_[a][i], r.inverse[a] = inverse_[a][i];
+      r.negative[a] = std::signbit(r.inverse[a]);  // the direction's (1 / -0 is -inf)
+      r.finiteInverse = r.finiteInverse && std::isfinite(r.inverse[a]);
+    }
+    return r;
+  }
+
   // Lane i walks the subtree alone, with its own closest-hit state.
   void single(int i, std::uint32_t ref) {
-    const detail::TraversalRay ray = detail::traversalRay(rays_, index_[i]);
+    const detail::TraversalRay ray = traversalRay(i);
     Closest& hits = own(i);
     if (ray.finiteInverse) {
       RayCore<Closest, true> core(mesh_, ray, hits);
@@ -431,7 +451,6 @@ class RayPacket {
   }
 
   const MeshView& mesh_;
-  const RaysView& rays_;
   const std::uint32_t* index_;
   // Per lane: its closest hit in rows while it holds at most one (found_: one, at tMin_ with id_),
   // else in hits_ (owned_), and what the packet tests read.
