@@ -4,11 +4,12 @@
 // width; included in simd/bvh_ray.cpp inside each target's namespace, after RayCore and the sinks
 // (no include guard, by design).
 //
-// Every lane does the single-ray traversal's arithmetic: the same slab test with the same scaled
-// entry and exit (so a box the lone ray would enter is never culled), and the same watertight
-// triangle test, operation for operation, with the lane's own shear. The packet only changes the
-// order in which a ray meets boxes and triangles, and the closest-hit rule (ClosestHits) does not
-// depend on that order: the answers equal the single-ray ones bit for bit.
+// No box a lane's single-ray traversal would enter is culled for it (the packet's bounds cull
+// only boxes no ray in them enters, with the same scaled entry and exit), and every lane does
+// the same watertight triangle test, operation for operation, with its own shear. The packet only
+// changes the order in which a ray meets triangles (and adds some it would not have met), and the
+// closest-hit rule (ClosestHits) does not depend on that: the answers equal the single-ray ones
+// bit for bit.
 
 template <std::size_t N>
 class RayPacket {
@@ -93,12 +94,13 @@ class RayPacket {
 
   // The packet as a walker of walkBvh (bvh_walk-inl.hpp). kFinite: every ray's inverse direction
   // is finite, so Min/Max bound the slabs (raySlab's rule). An entry is Embree's: a key that is at
-  // most every lane's entry distance, and the lanes whose ray enters the box (per-lane distances
-  // would cost a 64-byte row an entry for culling that the key and the lanes' bounds mostly do).
+  // most every lane's entry distance, and the lanes whose ray may enter the box (per-lane
+  // distances would cost a 64-byte row an entry for culling that the key and the lanes' bounds
+  // mostly do).
   struct Entry {
     std::uint32_t ref;
     float key;            // a lower bound of the lanes' scaled entry distances: nearest first
-    std::uint32_t lanes;  // the lanes whose ray enters the box, as bits
+    std::uint32_t lanes;  // the lanes whose ray may enter the box, as bits
   };
   template <bool kFinite>
   class Walk {
@@ -307,55 +309,75 @@ class RayPacket {
     bound_[i] = hits.bound();
   }
 
-  // Each child box against the active rays (rays in lanes, one box broadcast); the children
-  // some ray enters go on the stack, farthest first. Returns the new top.
+  // The active lanes whose ray enters child k of n, as bits, and in `key` the least of their
+  // entry distances: the box broadcast against the rays in lanes, each lane with the single-ray
+  // test's arithmetic (near face by the sign bit of its direction: that of the inverse, -0 giving
+  // -inf, as RayCore picks it per ray).
   template <bool kFinite>
-  int expand(const BvhNode& n, std::uint32_t lanes, Entry* stack, int top) const {
+  std::uint32_t entering(const BvhNode& n, int k, std::uint32_t lanes, float& key) const {
     const D d;
     const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const auto zero = hn::Zero(d);
-    Entry kids[BvhNode::kWidth];
-    int count = 0;
     const float* const lo[3] = {n.minX, n.minY, n.minZ};
     const float* const hi[3] = {n.maxX, n.maxY, n.maxZ};
-    alignas(32) float enter8[BvhNode::kWidth];
+    std::uint32_t entered = 0;
+    auto least = inf;
+    for (std::size_t h = 0; h < N; h += kLanes) {
+      const auto active = maskOf(lanes, h);
+      if (hn::AllFalse(d, active)) continue;
+      const auto bound = hn::Load(d, bound_ + h);
+      hn::Vec<D> origin[3], inverse[3], enter;
+      for (int a = 0; a < 3; ++a)
+        origin[a] = hn::Load(d, origin_[a] + h), inverse[a] = hn::Load(d, inverse_[a] + h);
+      auto faces = [&](int a, hn::Vec<D>& nearFace, hn::Vec<D>& farFace) {
+        const auto boxLo = hn::Set(d, lo[a][k]), boxHi = hn::Set(d, hi[a][k]);
+        if (cull_) {  // one octant: the same faces in every lane
+          nearFace = negative_[a] ? boxHi : boxLo, farFace = negative_[a] ? boxLo : boxHi;
+          return;
+        }
+        const auto negative = hn::Lt(inverse[a], zero);
+        nearFace = hn::IfThenElse(negative, boxHi, boxLo);
+        farFace = hn::IfThenElse(negative, boxLo, boxHi);
+      };
+      const auto hit = hn::And(active, raySlab<kFinite>(d, faces, origin, inverse, bound, enter));
+      entered |= bitsOf(hit) << h;
+      least = hn::Min(least, hn::IfThenElse(hit, enter, inf));
+    }
+    key = hn::GetLane(hn::MinOfLanes(d, least));
+    return entered;
+  }
+
+  // The children some ray may enter go on the stack, farthest first; returns the new top. A
+  // packet in one octant takes the children its bounds pass (maybeEntered); a leaf among them is
+  // tested against the active lanes one by one, but a node is passed all of them: testing every
+  // passing node against the lanes, as Embree's coherent walk does, culled too little to pay for
+  // itself on tiles (docs/bvh.md). Other packets test each child against the lanes.
+  template <bool kFinite>
+  int expand(const BvhNode& n, std::uint32_t lanes, Entry* stack, int top) const {
+    Entry kids[BvhNode::kWidth];
+    int count = 0;
     const bool cull = kFinite && cull_;
-    // An empty slot's inverted box fails the pre-test.
-    std::uint32_t candidates = cull ? maybeEntered(lo, hi, enter8) : 0;
-    if (!cull)
+    alignas(32) float enter[BvhNode::kWidth];
+    std::uint32_t candidates = 0;
+    if (cull) {
+      const float* const lo[3] = {n.minX, n.minY, n.minZ};
+      const float* const hi[3] = {n.maxX, n.maxY, n.maxZ};
+      candidates = maybeEntered(lo, hi, enter);  // an empty slot's inverted box fails it
+    } else {
       for (int k = 0; k < BvhNode::kWidth; ++k)
         candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
+    }
     for (; candidates != 0; candidates &= candidates - 1) {
       const int k = __builtin_ctz(candidates);
-      std::uint32_t entered = 0;
-      auto key = inf;
-      for (std::size_t h = 0; h < N; h += kLanes) {
-        const auto active = maskOf(lanes, h);
-        if (hn::AllFalse(d, active)) continue;
-        const auto bound = hn::Load(d, bound_ + h);
-        hn::Vec<D> origin[3], inverse[3], enter;
-        for (int a = 0; a < 3; ++a)
-          origin[a] = hn::Load(d, origin_[a] + h), inverse[a] = hn::Load(d, inverse_[a] + h);
-        // The near face by the sign bit of the direction (that of its inverse, -0 giving -inf),
-        // per lane, as RayCore picks it per ray. A packet in one octant (cull_) has the same
-        // faces in every lane.
-        auto faces = [&](int a, hn::Vec<D>& nearFace, hn::Vec<D>& farFace) {
-          const auto boxLo = hn::Set(d, lo[a][k]), boxHi = hn::Set(d, hi[a][k]);
-          if (cull_) {
-            nearFace = negative_[a] ? boxHi : boxLo, farFace = negative_[a] ? boxLo : boxHi;
-            return;
-          }
-          const auto negative = hn::Lt(inverse[a], zero);
-          nearFace = hn::IfThenElse(negative, boxHi, boxLo);
-          farFace = hn::IfThenElse(negative, boxLo, boxHi);
-        };
-        const auto hit = hn::And(active, raySlab<kFinite>(d, faces, origin, inverse, bound, enter));
-        entered |= bitsOf(hit) << h;
-        if (!cull) key = hn::Min(key, hn::MinOfLanes(d, hn::IfThenElse(hit, enter, inf)));
+      Entry kid{n.child[k], enter[k], lanes};
+      if (!cull || BvhNode::isLeaf(kid.ref)) {
+        float key;
+        kid.lanes = entering<kFinite>(n, k, lanes, key);
+        if (kid.lanes == 0) continue;
+        if (!cull) kid.key = key;
       }
-      if (entered == 0) continue;
-      kids[count++] = {n.child[k], cull ? enter8[k] : hn::GetLane(key), entered};
-      prefetchAll(mesh_, n.child[k]);
+      kids[count++] = kid;
+      prefetchAll(mesh_, kid.ref);
     }
     // Insertion sort by key onto the stack, farthest first: the nearest is popped next.
     const int base = top;
