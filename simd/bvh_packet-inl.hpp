@@ -354,8 +354,6 @@ class RayPacket {
   // itself on tiles (docs/bvh.md). Other packets test each child against the lanes.
   template <bool kFinite>
   int expand(const BvhNode& n, std::uint32_t lanes, Entry* stack, int top) const {
-    Entry kids[BvhNode::kWidth];
-    int count = 0;
     const bool cull = kFinite && cull_;
     alignas(32) float enter[BvhNode::kWidth];
     std::uint32_t candidates = 0;
@@ -367,24 +365,21 @@ class RayPacket {
       for (int k = 0; k < BvhNode::kWidth; ++k)
         candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
     }
+    const int base = top;
     for (; candidates != 0; candidates &= candidates - 1) {
       const int k = __builtin_ctz(candidates);
-      Entry kid{n.child[k], enter[k], lanes};
+      Entry kid{n.child[k], cull ? enter[k] : 0.0f, lanes};
       if (!cull || BvhNode::isLeaf(kid.ref)) {
         float key;
         kid.lanes = entering<kFinite>(n, k, lanes, key);
         if (kid.lanes == 0) continue;
         if (!cull) kid.key = key;
       }
-      kids[count++] = kid;
       prefetchAll(mesh_, kid.ref);
-    }
-    // Insertion sort by key onto the stack, farthest first: the nearest is popped next.
-    const int base = top;
-    for (int c = 0; c < count; ++c) {
+      // Inserted by key, farthest first: the nearest is popped next.
       int j = top++;
-      while (j > base && stack[j - 1].key < kids[c].key) stack[j] = stack[j - 1], --j;
-      stack[j] = kids[c];
+      while (j > base && stack[j - 1].key < kid.key) stack[j] = stack[j - 1], --j;
+      stack[j] = kid;
     }
     return top;
   }
