@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <array>
 #include <limits>
-#include <optional>
 
 #include <omp.h>
 
@@ -108,13 +107,23 @@ class Builder {
           best = k, mustSplit = must;
       }
       if (best < 0) break;
-      auto [left, right] = split(kids[best]);
-      if (!mustSplit && leafCost(left) + leafCost(right) >= leafCost(kids[best])) {
+      Range& parent = kids[best];
+      simd::BvhSides sides;
+      split(parent, sides);
+      const std::uint32_t left = std::uint32_t(sides.left), right = parent.count() - left;
+      if (!mustSplit &&
+          leafCost(Bounds(sides.box[0]), left) + leafCost(Bounds(sides.box[1]), right) >=
+              leafCost(parent.box, parent.count())) {
         settled[best] = true;
         continue;
       }
-      kids[best] = left;
-      kids[used++] = right;
+      // The halves written in place: a range is 80 bytes, and copies of pairs of them were a
+      // twentieth of the build.
+      const std::uint32_t middle = parent.begin + left;
+      kids[used++] = Range{middle, parent.end, Bounds(sides.box[1]), Bounds(sides.centroids[1]),
+                           parent.splits + 1};
+      parent = Range{parent.begin, middle, Bounds(sides.box[0]), Bounds(sides.centroids[0]),
+                     parent.splits + 1};
     }
     std::array<AlignedVector<BvhNode>, BvhNode::kWidth> subtrees;
     std::array<int, BvhNode::kWidth> depths{};
@@ -164,23 +173,24 @@ class Builder {
     }
   }
 
-  // The SAH cost of testing a range as one leaf: its surface times the blocks of leafAlign
-  // primitives it takes.
-  float leafCost(const Range& r) const {
-    const std::uint32_t blocks = (r.count() + options_.leafAlign - 1) / options_.leafAlign;
-    return r.box.halfArea() * float(blocks);
+  // The SAH cost of testing `count` primitives in `box` as one leaf: its surface times the blocks
+  // of leafAlign primitives they take.
+  float leafCost(const Bounds& box, std::uint32_t count) const {
+    const std::uint32_t blocks = (count + options_.leafAlign - 1) / options_.leafAlign;
+    return box.halfArea() * float(blocks);
   }
 
-  std::pair<Range, Range> split(const Range& r) {
+  // Reorders the range into two non-empty sides, measured in `sides`.
+  void split(const Range& r, simd::BvhSides& sides) {
     // Binning has a fixed cost (two sets of 48 bins to clear and merge, then the sweep) that small
     // ranges do not repay.
-    if (r.splits < kMaxSahDepth && r.count() > kSmallRange)
-      if (auto s = sahSplit(r)) return *s;
-    return medianSplit(r);
+    if (r.splits < kMaxSahDepth && r.count() > kSmallRange && sahSplit(r, sides)) return;
+    medianSplit(r, sides);
   }
 
   // Binned SAH over the three axes: one pass fills the bins, a second partitions the range.
-  std::optional<std::pair<Range, Range>> sahSplit(const Range& r) {
+  // False if no axis splits it.
+  bool sahSplit(const Range& r, simd::BvhSides& sides) {
     simd::BvhBinFrame frame{};
     // Embree's bin count, 4 + N / 20 up to the most: small ranges pay for fewer bins to clear,
     // merge and sweep, and lose little choice.
@@ -217,17 +227,15 @@ class Builder {
         if (cost < bestCost) bestCost = cost, bestAxis = a, bestBin = k;
       }
     }
-    if (bestAxis < 0) return std::nullopt;
-    simd::BvhSides sides;
+    if (bestAxis < 0) return false;
     simd::bvhPartition(prims_.data() + r.begin, r.count(), frame, bestAxis, bestBin, sides);
     // The partition repeats the binning's arithmetic, so neither side is empty; should a platform
     // ever round the two differently, the median split still makes progress.
-    if (sides.left == 0 || sides.left == r.count()) return std::nullopt;
-    return sidesOf(r, sides);
+    return sides.left != 0 && sides.left != r.count();
   }
 
   // Halves the range at the median centroid on the widest axis (ties by id): always balanced.
-  std::pair<Range, Range> medianSplit(const Range& r) {
+  void medianSplit(const Range& r, simd::BvhSides& sides) {
     int a = 0;
     for (int k = 1; k < 3; ++k)
       if (r.cbox.hi[k] - r.cbox.lo[k] > r.cbox.hi[a] - r.cbox.lo[a]) a = k;
@@ -238,18 +246,10 @@ class Builder {
     std::nth_element(prims_.begin() + r.begin, prims_.begin() + r.begin + half,
                      prims_.begin() + r.end, less);
     // nth_element leaves the smaller half before the median (the order is total): measure them.
-    simd::BvhSides sides;
     simd::bvhBounds(prims_.data() + r.begin, half, sides.box[0], sides.centroids[0]);
     simd::bvhBounds(prims_.data() + r.begin + half, r.count() - half, sides.box[1],
                     sides.centroids[1]);
     sides.left = half;
-    return sidesOf(r, sides);
-  }
-
-  static std::pair<Range, Range> sidesOf(const Range& r, const simd::BvhSides& s) {
-    const std::uint32_t middle = r.begin + std::uint32_t(s.left);
-    return {Range{r.begin, middle, Bounds(s.box[0]), Bounds(s.centroids[0]), r.splits + 1},
-            Range{middle, r.end, Bounds(s.box[1]), Bounds(s.centroids[1]), r.splits + 1}};
   }
 
   AlignedVector<BvhNode>& nodes_;
