@@ -8,6 +8,7 @@
 
 #include "simdphys/geometry3d/raycast.hpp"  // triangleNormalWide: the raycast's degeneracy test
 #include "simdphys/mesh.hpp"
+#include "src/mesh/mesh_internal.hpp"
 #include "src/reference/validate-inl.hpp"
 
 namespace simdphys {
@@ -63,6 +64,12 @@ std::vector<std::uint8_t> activeEdges(const Mesh& mesh) {
 }
 
 void Mesh::validate(std::string_view where) const {
+  detail::validateVertices(*this, where);
+  for (std::size_t i = 0; i < triangles.size(); ++i) detail::validateTriangle(*this, i, where);
+}
+
+void detail::validateVertices(const Mesh& mesh, std::string_view where) {
+  const auto& vertices = mesh.vertices;
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     if (!vertices[i].allFinite())
       detail::requireFiniteField(vertices[i], std::string(where) + ": vertex " + std::to_string(i),
@@ -74,18 +81,19 @@ void Mesh::validate(std::string_view where) const {
       throw Error(msg.str());
     }
   }
-  const std::size_t n = vertices.size();
-  for (std::size_t i = 0; i < triangles.size(); ++i) {
-    const auto& t = triangles[i];
-    for (int k = 0; k < 3; ++k)
-      if (t[k] >= n)
-        throw Error(std::string(where) + ": triangle " + std::to_string(i) + ": vertex index " +
-                    std::to_string(t[k]) + " is out of range (" + std::to_string(n) + " vertices)");
-    if ((detail::rays::triangleNormalWide(triangle(i)).array() == 0).all())
-      throw Error(std::string(where) + ": triangle " + std::to_string(i) + " (vertices " +
-                  std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
-                  ") is degenerate: its vertices are collinear");
-  }
+}
+
+void detail::validateTriangle(const Mesh& mesh, std::size_t i, std::string_view where) {
+  const auto& t = mesh.triangles[i];
+  const std::size_t n = mesh.vertices.size();
+  for (int k = 0; k < 3; ++k)
+    if (t[k] >= n)
+      throw Error(std::string(where) + ": triangle " + std::to_string(i) + ": vertex index " +
+                  std::to_string(t[k]) + " is out of range (" + std::to_string(n) + " vertices)");
+  if ((detail::rays::triangleNormalWide(mesh.triangle(i)).array() == 0).all())
+    throw Error(std::string(where) + ": triangle " + std::to_string(i) + " (vertices " +
+                std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                ") is degenerate: its vertices are collinear");
 }
 
 Mesh heightfieldMesh(std::uint32_t columns, std::uint32_t rows, double x0, double x1, double z0,

@@ -261,15 +261,17 @@ float extentOf(const Mesh& m) {
 }  // namespace
 
 MeshBvh::MeshBvh(Mesh mesh) : mesh_(std::move(mesh)) {
-  mesh_.validate("MeshBvh");
-  // The builder's primitives made from the triangles at once: the validated mesh's bounds are
-  // well formed, and an array of them first would be one more pass over 24 bytes a triangle.
+  // The builder's primitives made from the triangles as they are validated (one pass over them;
+  // an array of bounds between would be another, over 24 bytes a triangle): a valid triangle's
+  // bounds are well formed.
+  detail::validateVertices(mesh_, "MeshBvh");
   if (mesh_.size() > Bvh::kMaxPrimitives)
     throw Error("MeshBvh: " + std::to_string(mesh_.size()) + " triangles, more than the " +
                 std::to_string(Bvh::kMaxPrimitives) + " a tree can index");
   AlignedVector<detail::BvhPrimRef> prims;  // reserved, not sized: a sized vector is zeroed first
   prims.reserve(mesh_.size());
   for (std::uint32_t i = 0; i < mesh_.size(); ++i) {
+    detail::validateTriangle(mesh_, i, "MeshBvh");
     const Aabb b = boundsOf(mesh_.triangle(i));
     prims.push_back(detail::BvhPrimRef({b.min.x(), b.min.y(), b.min.z()},
                                        {b.max.x(), b.max.y(), b.max.z()}, i));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <span>
+#include <string_view>
 
 #include "core/traversal_ray.hpp"
 #include "simd/kernels.hpp"
@@ -16,6 +17,13 @@ ElementHit closestHit(const Bvh& bvh, std::span<const TriangleBlock> blocks,
                       const detail::TraversalRay& ray);
 bool anyHit(const Bvh& bvh, std::span<const TriangleBlock> blocks, const detail::TraversalRay& ray);
 }  // namespace reference
+
+namespace detail {
+// Mesh::validate in its two parts, for a caller that makes something of each triangle (the
+// tree's primitives) and so reads it once: the vertices, then triangle i.
+void validateVertices(const Mesh& mesh, std::string_view where);
+void validateTriangle(const Mesh& mesh, std::size_t i, std::string_view where);
+}  // namespace detail
 
 inline simd::MeshView meshView(const Bvh& bvh, std::span<const TriangleBlock> blocks) {
   return {bvh.nodes().data(), bvh.nodes().size(), blocks.data()};
