@@ -301,20 +301,21 @@ void MeshBvh::refit(std::span<const Vec3f> vertices) {
 
 void MeshBvh::fillBlocks() {
   const auto order = bvh_.order();
-  // Appended one by one rather than resized: resizing would zero 30 MB only to overwrite it.
+  // Appended one by one, each filled where it lies, rather than resized: resizing would zero 30 MB
+  // in a pass of its own only to overwrite it.
   blocks_.clear();
   blocks_.reserve(order.size() / TriangleBlock::kWidth);
   for (std::size_t b = 0; b < order.size() / TriangleBlock::kWidth; ++b) {
-    TriangleBlock block;
+    TriangleBlock& block = blocks_.emplace_back();
     for (int l = 0; l < TriangleBlock::kWidth; ++l) {
       const std::uint32_t id = order[b * TriangleBlock::kWidth + l];
-      const Triangle t = mesh_.triangle(id);
-      const Vec3f* v[3] = {&t.a, &t.b, &t.c};
-      for (int q = 0; q < 3; ++q)
-        for (int k = 0; k < 3; ++k) block.v[q][k][l] = (*v[q])[k];
+      const auto& corners = mesh_.triangles[id];
+      for (int q = 0; q < 3; ++q) {
+        const Vec3f& v = mesh_.vertices[corners[q]];
+        for (int k = 0; k < 3; ++k) block.v[q][k][l] = v[k];
+      }
       block.id[l] = id;
     }
-    blocks_.push_back(block);
   }
 }
 
