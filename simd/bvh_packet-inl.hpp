@@ -40,7 +40,20 @@ class RayPacket {
       const auto here = hn::RebindMask(d, hn::Ne(raw, hn::Set(di, -1)));
       const auto at = hn::IfThenElse(hn::RebindMask(di, here), raw, hn::Zero(di));
       present_ |= bitsOf(here) << h;
+#if HWY_TARGET != HWY_SCALAR
+      // Tiles' rows and rows of the stream are runs of 4 consecutive rays.
+      bool runs = false;
+      if constexpr (kLanes % 4 == 0) {
+        const auto step = hn::And(hn::Iota(di, 0), hn::Set(di, 3));
+        runs = hn::AllTrue(d, here) &&
+               hn::AllTrue(di, hn::Eq(raw, hn::Add(hn::Broadcast<0>(raw), step)));
+      }
+#endif
       auto gather = [&](std::size_t f, hn::Vec<D> absent) {
+#if HWY_TARGET != HWY_SCALAR
+        if constexpr (kLanes % 4 == 0)
+          if (runs) return loadRuns(d, rays[f], index + h);
+#endif
         return hn::IfThenElse(here, hn::GatherIndex(d, rays[f], at), absent);
       };
       hn::Vec<D> direction[3];
@@ -143,6 +156,21 @@ class RayPacket {
     Walk<kFinite> walk(*this);
     walkBvh(mesh_.nodes, mesh_.nodeCount, walk, Entry{0, 0.0f, present_});
   }
+
+#if HWY_TARGET != HWY_SCALAR  // one lane: no runs
+  // A field's values for lanes that are runs of 4 consecutive rays (index[0], index[4], ...: the
+  // first of each run), one 4-float load a run where a gather loads lane by lane.
+  template <class DV>
+  static hn::Vec<DV> loadRuns(DV d, const float* field, const std::uint32_t* index) {
+    if constexpr (hn::MaxLanes(DV()) <= 4) {
+      return hn::LoadU(d, field + index[0]);
+    } else {
+      const hn::Half<DV> half;
+      return hn::Combine(d, loadRuns(half, field, index + hn::MaxLanes(half)),
+                         loadRuns(half, field, index));
+    }
+  }
+#endif
 
   // A mask's lanes as the low bits of an integer (of at most 16 lanes). AVX-512's masks are
   // those bits already, where StoreMaskBits would pass them through memory.
