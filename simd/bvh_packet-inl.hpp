@@ -393,6 +393,10 @@ class RayPacket {
       for (int k = 0; k < BvhNode::kWidth; ++k)
         candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
     }
+    // Everything the packet may visit is fetched before the leaves' lane tests: the nearest
+    // child is visited at once.
+    for (std::uint32_t c = candidates; c != 0; c &= c - 1)
+      prefetchAll(mesh_, n.child[__builtin_ctz(c)]);
     const int base = top;
     for (; candidates != 0; candidates &= candidates - 1) {
       const int k = __builtin_ctz(candidates);
@@ -403,7 +407,6 @@ class RayPacket {
         if (kid.lanes == 0) continue;
         if (!cull) kid.key = key;
       }
-      prefetchAll(mesh_, kid.ref);
       // Inserted by key, farthest first: the nearest is popped next.
       int j = top++;
       while (j > base && stack[j - 1].key < kid.key) stack[j] = stack[j - 1], --j;
