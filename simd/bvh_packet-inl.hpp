@@ -69,6 +69,7 @@ class RayPacket {
       hn::Store(tMax, d, bound_ + h);
       hn::Store(tMax, d, tMax_ + h);
       hn::Store(hn::Set(d, std::numeric_limits<float>::infinity()), d, tMin_ + h);
+      hn::Store(hn::Set(hn::RebindToUnsigned<D>(), kNoHit), hn::RebindToUnsigned<D>(), id_ + h);
       const auto dx = direction[0], dy = direction[1], dz = direction[2];
       // kz: the first axis of largest |d|; kx, ky the next two, swapped for a negative d[kz].
       const auto y = hn::Gt(hn::Abs(dy), hn::Abs(dx));
@@ -99,9 +100,8 @@ class RayPacket {
       trace<false>();
     for (std::uint32_t m = present_; m != 0; m &= m - 1) {
       const int i = __builtin_ctz(m);
-      out[index_[i]] = (owned_ >> i & 1)   ? hits_[i].result()
-                       : (found_ >> i & 1) ? ElementHit{id_[i], tMin_[i]}
-                                           : ElementHit{};
+      // A lane without a hit holds ElementHit's miss (kNoHit, inf).
+      out[index_[i]] = (owned_ >> i & 1) ? hits_[i].result() : ElementHit{id_[i], tMin_[i]};
     }
   }
 
@@ -504,7 +504,7 @@ class RayPacket {
   // else in hits_ (owned_), and what the packet tests read.
   alignas(64) float bound_[N];
   alignas(64) float tMax_[N], tMin_[N];
-  alignas(64) std::uint32_t id_[N] = {};
+  alignas(64) std::uint32_t id_[N];
   std::uint32_t found_ = 0, owned_ = 0;
   Closest hits_[N];
   alignas(64) float origin_[3][N];
