@@ -461,9 +461,10 @@ class RayPacket {
           hn::Vec<D> t;
           const auto hit = hn::And(active, watertightSheared<false>(d, px, py, pz, sz, bound, t));
           hn::Store(hn::IfThenElse(hit, t, none), d, ts[l]);
+          // A lane's first hit is its nearest so far even at t = inf (a ray with tMax = inf).
+          const auto nearer = hn::And(hit, hn::Or(hn::Not(seen), hn::Lt(t, nearest)));
           several = hn::Or(several, hn::And(hit, seen));
           seen = hn::Or(seen, hit);
-          const auto nearer = hn::And(hit, hn::Lt(t, nearest));
           nearest = hn::IfThenElse(nearer, t, nearest);
           nearestId =
               hn::IfThenElse(hn::RebindMask(du, nearer), hn::Set(du, block.id[l]), nearestId);
