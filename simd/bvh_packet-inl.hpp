@@ -303,14 +303,19 @@ class RayPacket {
     return hits_[i];
   }
 
+  // A shear frame's axes (frame = 2 kz + whether kx and ky are swapped for a negative d[kz]).
+  static void axesOf(int frame, int& kx, int& ky, int& kz) {
+    kz = frame / 2, kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (frame & 1) std::swap(kx, ky);
+  }
+
   // Lane i's ray as the single-ray walk takes it, from the lanes (traversalRay's values, set up
   // across the lanes with its operations) rather than from the stream again.
   detail::TraversalRay traversalRay(int i) const {
     detail::TraversalRay r;
     int frame = 0;
     while (!(frameLanes_[frame] >> i & 1)) ++frame;
-    r.kz = frame / 2, r.kx = (r.kz + 1) % 3, r.ky = (r.kx + 1) % 3;
-    if (frame & 1) std::swap(r.kx, r.ky);
+    axesOf(frame, r.kx, r.ky, r.kz);
     r.ox = origin_[0][i], r.oy = origin_[1][i], r.oz = origin_[2][i];
     r.sx = sx_[i], r.sy = sy_[i], r.sz = sz_[i];
     r.tMax = tMax_[i];
@@ -434,9 +439,8 @@ class RayPacket {
       const int frame = __builtin_ctz(frames);
       const std::uint32_t inFrame = lanes & frameLanes_[frame];
       if (inFrame == 0) continue;
-      const int kz = frame / 2;
-      int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-      if (frame & 1) std::swap(kx, ky);
+      int kx, ky, kz;
+      axesOf(frame, kx, ky, kz);
       for (std::size_t h = 0; h < N; h += kLanes) {
         if (((inFrame >> h) & ((1u << kLanes) - 1)) == 0) continue;
         const auto active = maskOf(inFrame, h);
