@@ -136,30 +136,38 @@ void tracePackets(const MeshBvh& bvh, const RayStream& rays, std::span<ElementHi
     return at < n ? std::uint32_t(at) : simd::kAbsentLane;
   };
   const bool onlyCoherent = options.mode == RayStreamOptions::Mode::kAuto;
-  std::vector<std::uint32_t> packets, singles;
-  packets.reserve(n + width);
-  for (std::size_t g = 0; g < groups; ++g) {
-    std::uint32_t lanes[16];
-    bool any = false;
-    for (std::uint32_t i = 0; i < width; ++i)
-      lanes[i] = lane(g, i), any = any || lanes[i] != simd::kAbsentLane;
-    if (!any) continue;  // a tile past the stream's end (an image wider than the stream)
-    if (!onlyCoherent || sameOctant(rays, lanes, width)) {
-      packets.insert(packets.end(), lanes, lanes + width);
-      continue;
-    }
-    for (std::uint32_t i = 0; i < width; ++i)
-      if (lanes[i] != simd::kAbsentLane) singles.push_back(lanes[i]);
-  }
   const simd::MeshView mesh = meshView(bvh.bvh(), bvh.blocks());
   const simd::RaysView all = view(rays);
-  const std::size_t perBatch = kChunk / width, count = packets.size() / width;
-  const std::int64_t batches = std::int64_t((count + perBatch - 1) / perBatch);
+  // Each batch of groups makes its packets as it traces them: an index of the whole stream
+  // (3 MB for W2's camera) would be written and read once, on fresh pages, every call.
+  const std::size_t perBatch = kChunk / width;
+  const std::int64_t batches = std::int64_t((groups + perBatch - 1) / perBatch);
+  std::vector<std::uint32_t> singles;
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t b = 0; b < batches; ++b) {
+    std::uint32_t packets[kChunk], alone[kChunk];
+    std::size_t packed = 0, lone = 0;
     const std::size_t first = std::size_t(b) * perBatch;
-    simd::meshClosestHitPackets(mesh, all, packets.data() + first * width,
-                                std::min(perBatch, count - first), int(width), out.data());
+    for (std::size_t g = first; g < std::min(groups, first + perBatch); ++g) {
+      std::uint32_t* lanes = packets + packed;
+      bool any = false;
+      for (std::uint32_t i = 0; i < width; ++i)
+        lanes[i] = lane(g, i), any = any || lanes[i] != simd::kAbsentLane;
+      if (!any) continue;  // a tile past the stream's end (an image wider than the stream)
+      if (!onlyCoherent || sameOctant(rays, lanes, width)) {
+        packed += width;
+        continue;
+      }
+      for (std::uint32_t i = 0; i < width; ++i)
+        if (lanes[i] != simd::kAbsentLane) alone[lone++] = lanes[i];
+    }
+    if (packed != 0)
+      simd::meshClosestHitPackets(mesh, all, packets, packed / width, int(width), out.data());
+    // Each ray's answer is its own: the order singles are gathered in does not change them.
+    if (lone != 0) {
+#pragma omp critical(simdphys_stream_singles)
+      singles.insert(singles.end(), alone, alone + lone);
+    }
   }
   traceSingles(bvh, rays, singles, out);
 }
