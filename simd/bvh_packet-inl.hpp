@@ -328,18 +328,49 @@ class RayPacket {
     return r;
   }
 
-  // Lane i walks the subtree alone, with its own closest-hit state.
+  // Lane i's hit (t, id), as ClosestHits::offer takes it: held in the rows while the lane holds
+  // at most one hit (nothing held, or a nearer hit whose window leaves out the one held: the
+  // state offer would leave is that one hit), else offered to the lane's own ClosestHits.
+  void offer(int i, float t, std::uint32_t id) {
+    const std::uint32_t bit = 1u << i;
+    if (!(owned_ & bit)) {
+      if (t > bound_[i]) return;
+      const float window = std::min(t * kTieWindow, tMax_[i]);
+      if (!(found_ & bit) || (t < tMin_[i] && tMin_[i] > window)) {
+        found_ |= bit;
+        tMin_[i] = t, id_[i] = id, bound_[i] = window;
+        return;
+      }
+    }
+    Closest& hits = own(i);
+    hits.offer(t, id);
+    bound_[i] = hits.bound();
+  }
+
+  // Lane i as the sink of a single-ray walk.
+  class LaneHits {
+   public:
+    static constexpr bool kAnyHit = false;
+    LaneHits(RayPacket& packet, int i) : packet_(packet), i_(i) {}
+    float bound() const { return packet_.bound_[i_]; }
+    void offer(float t, std::uint32_t id) { packet_.offer(i_, t, id); }
+
+   private:
+    RayPacket& packet_;
+    int i_;
+  };
+
+  // Lane i walks the subtree alone, its hits offered as the leaf offers them.
   void single(int i, std::uint32_t ref) {
     const detail::TraversalRay ray = traversalRay(i);
-    Closest& hits = own(i);
+    LaneHits hits(*this, i);
     if (ray.finiteInverse) {
-      RayCore<Closest, true> core(mesh_, ray, hits);
+      RayCore<LaneHits, true> core(mesh_, ray, hits);
       traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
     } else {
-      RayCore<Closest, false> core(mesh_, ray, hits);
+      RayCore<LaneHits, false> core(mesh_, ray, hits);
       traverseRay(mesh_.nodes, mesh_.nodeCount, core, ref);
     }
-    bound_[i] = hits.bound();
   }
 
   // The active lanes whose ray enters child k of n, as bits, and in `key` the least of their
@@ -491,13 +522,11 @@ class RayPacket {
         found_ |= kept;
         for (std::uint32_t rest = (bitsOf(seen) << h) & ~kept; rest != 0; rest &= rest - 1) {
           const int i = __builtin_ctz(rest);
-          Closest& hits = own(i);
           for (std::uint32_t m = triangles; m != 0; m &= m - 1) {
             const int l = __builtin_ctz(m);
             const float t = ts[l][std::size_t(i) - h];
-            if (t == t) hits.offer(t, block.id[l]);
+            if (t == t) offer(i, t, block.id[l]);
           }
-          bound_[i] = hits.bound();
         }
       }
     }
