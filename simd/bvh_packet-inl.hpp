@@ -56,14 +56,14 @@ class RayPacket {
 #endif
         return hn::IfThenElse(here, hn::GatherIndex(d, rays[f], at), absent);
       };
-      hn::Vec<D> direction[3];
+      hn::Vec<D> direction[3], inverse[3];
       bool finite = true;
       for (int a = 0; a < 3; ++a) {
         hn::Store(gather(R::origin + std::size_t(a), zero), d, origin_[a] + h);
         direction[a] = gather(R::direction + std::size_t(a), one);
-        const auto inverse = hn::Div(one, direction[a]);
-        hn::Store(inverse, d, inverse_[a] + h);
-        finite = finite && hn::AllTrue(d, hn::IsFinite(inverse));
+        inverse[a] = hn::Div(one, direction[a]);
+        hn::Store(inverse[a], d, inverse_[a] + h);
+        finite = finite && hn::AllTrue(d, hn::IsFinite(inverse[a]));
       }
       const auto tMax = gather(R::tMax, hn::Set(d, -std::numeric_limits<float>::infinity()));
       hn::Store(tMax, d, bound_ + h);
@@ -80,7 +80,9 @@ class RayPacket {
       const auto swapped = hn::Lt(along, zero);
       hn::Store(hn::Div(hn::IfThenElse(swapped, last, next), along), d, sx_ + h);
       hn::Store(hn::Div(hn::IfThenElse(swapped, next, last), along), d, sy_ + h);
-      hn::Store(hn::Div(one, along), d, sz_ + h);
+      // sz = 1 / d[kz]: the inverse along kz, the same division.
+      hn::Store(hn::IfThenElse(z, inverse[2], hn::IfThenElse(y, inverse[1], inverse[0])), d,
+                sz_ + h);
       const auto kz = hn::IfThenElse(z, hn::Set(d, 2.0f), hn::IfThenElse(y, one, zero));
       const auto frame = hn::Add(hn::Add(kz, kz), hn::IfThenElse(swapped, one, zero));
       for (int f = 0; f < 6; ++f)
