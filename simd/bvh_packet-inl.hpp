@@ -433,8 +433,15 @@ class RayPacket {
     }
     // Everything the packet may visit is fetched before the leaves' lane tests: the nearest
     // child is visited at once.
-    for (std::uint32_t c = candidates; c != 0; c &= c - 1)
-      prefetchAll(mesh_, n.child[__builtin_ctz(c)]);
+    // A child node's own leaves are fetched with it, a level ahead: a coherent packet visits
+    // most of them, and would otherwise wait for each block as soon as it was asked for.
+    for (std::uint32_t c = candidates; c != 0; c &= c - 1) {
+      const int k = __builtin_ctz(c);
+      prefetchAll(mesh_, n.child[k]);
+      if (n.leafSpan[k] != BvhNode::kEmpty)
+        core::prefetchLines(mesh_.blocks + BvhNode::leafFirst(n.leafSpan[k]),
+                            BvhNode::leafCount(n.leafSpan[k]) * sizeof(TriangleBlock));
+    }
     const int base = top;
     for (; candidates != 0; candidates &= candidates - 1) {
       const int k = __builtin_ctz(candidates);

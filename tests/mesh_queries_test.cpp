@@ -51,6 +51,31 @@ TEST_P(MeshQueries, TreeStructureOverTriangles) {
     }
   for (std::size_t i = 0; i < soup.size(); ++i) ASSERT_EQ(seen[i], 1) << "triangle " << i;
   EXPECT_LE(tree.depth(), BvhNode::kMaxDepth);
+  // Each child node's leafSpan names exactly its own leaves' blocks (walks prefetch them by it).
+  int spans = 0;
+  for (const BvhNode& n : tree.nodes())
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      const std::uint32_t c = n.child[k];
+      if (c == BvhNode::kEmpty || BvhNode::isLeaf(c)) {
+        EXPECT_EQ(n.leafSpan[k], BvhNode::kEmpty);
+        continue;
+      }
+      std::vector<std::uint32_t> blocks;
+      for (std::uint32_t g : tree.nodes()[c].child)
+        if (g != BvhNode::kEmpty && BvhNode::isLeaf(g))
+          blocks.push_back(BvhNode::leafFirst(g) / TriangleBlock::kWidth);
+      std::sort(blocks.begin(), blocks.end());
+      if (blocks.empty()) {
+        EXPECT_EQ(n.leafSpan[k], BvhNode::kEmpty);
+        continue;
+      }
+      ASSERT_NE(n.leafSpan[k], BvhNode::kEmpty) << "a node's leaves lie together";
+      ++spans;
+      const std::uint32_t first = BvhNode::leafFirst(n.leafSpan[k]);
+      ASSERT_EQ(BvhNode::leafCount(n.leafSpan[k]), blocks.size());
+      for (std::size_t b = 0; b < blocks.size(); ++b) EXPECT_EQ(blocks[b], first + b);
+    }
+  EXPECT_GT(spans, 0);
 }
 
 // Segments, overlaps and refit against brute force on every path: brute force depends on no path,

@@ -26,11 +26,19 @@ struct alignas(64) BvhNode {
   float minX[kWidth], minY[kWidth], minZ[kWidth];
   float maxX[kWidth], maxY[kWidth], maxZ[kWidth];
   std::uint32_t child[kWidth];
+  // leafSpan[k], for a child node: its own leaf children, which lie together (Bvh::build places
+  // leaves in node order), as (count - 1) << kCountShift | first, first the position of the
+  // first one's block of leafAlign primitives and count the blocks; kEmpty if it has none or the
+  // tree has no blocks. Lets a walk fetch a node's leaves with the node, one level ahead. It fills
+  // the last line's padding (the node stays 4 lines).
+  std::uint32_t leafSpan[kWidth];
 
   static bool isLeaf(std::uint32_t c) { return (c & kLeaf) != 0; }
   static std::uint32_t leafFirst(std::uint32_t c) { return c & kFirstMask; }
   static std::uint32_t leafCount(std::uint32_t c) { return ((c & ~kLeaf) >> kCountShift) + 1; }
 };
+
+static_assert(sizeof(BvhNode) == 256, "four cache lines");
 
 // A mesh leaf's triangles (mesh_bvh.hpp): up to 8, one per lane.
 struct alignas(64) TriangleBlock {

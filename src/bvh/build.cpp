@@ -283,6 +283,25 @@ AlignedVector<std::uint32_t> alignLeaves(AlignedVector<BvhNode>& nodes,
   return aligned;
 }
 
+// Sets each child node's leafSpan in its parent (bvh_types.hpp): its leaf children's blocks of
+// `align` primitives, when they are consecutive (alignLeaves places them so); align 0: no blocks.
+void spanLeaves(AlignedVector<BvhNode>& nodes, std::uint32_t align) {
+  for (BvhNode& node : nodes)
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      node.leafSpan[k] = BvhNode::kEmpty;
+      const std::uint32_t c = node.child[k];
+      if (align == 0 || c == BvhNode::kEmpty || BvhNode::isLeaf(c)) continue;
+      std::uint32_t first = BvhNode::kEmpty, last = 0, count = 0;
+      for (std::uint32_t g : nodes[c].child) {
+        if (g == BvhNode::kEmpty || !BvhNode::isLeaf(g)) continue;
+        const std::uint32_t block = BvhNode::leafFirst(g) / align;
+        first = std::min(first, block), last = std::max(last, block), ++count;
+      }
+      if (count != 0 && last - first + 1 == count)
+        node.leafSpan[k] = (count - 1) << BvhNode::kCountShift | first;
+    }
+}
+
 }  // namespace
 
 void Bvh::build(const BoxStream& boxes) {
@@ -339,6 +358,7 @@ void Bvh::buildFrom(AlignedVector<PrimRef> prims, const BvhBuildOptions& options
     throw Error(std::string(where) + ": depth " + std::to_string(depth_) +
                 " exceeds the traversal stack");
   if (options.maxLeafSize > 1) order_ = alignLeaves(nodes_, builder.order(), options.leafAlign);
+  spanLeaves(nodes_, options.maxLeafSize > 1 && options.leafAlign > 1 ? options.leafAlign : 0);
   if (order_.size() > kMaxPrimitives)
     throw Error(std::string(where) + ": the aligned leaves need " + std::to_string(order_.size()) +
                 " slots, more than the " + std::to_string(kMaxPrimitives) + " a tree can index");
