@@ -431,10 +431,9 @@ class RayPacket {
       for (int k = 0; k < BvhNode::kWidth; ++k)
         candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
     }
-    // Everything the packet may visit is fetched before the leaves' lane tests: the nearest
-    // child is visited at once.
-    // A child node's own leaves are fetched with it, a level ahead: a coherent packet visits
-    // most of them, and would otherwise wait for each block as soon as it was asked for.
+    // Everything the packet may visit is fetched before the leaves' lane tests (the nearest
+    // child is visited at once), and a child node's own leaves with it, a level ahead: a
+    // coherent packet visits most of them, and would otherwise wait for each block on arrival.
     for (std::uint32_t c = candidates; c != 0; c &= c - 1) {
       const int k = __builtin_ctz(c);
       prefetchAll(mesh_, n.child[k]);
