@@ -433,14 +433,14 @@ class RayPacket {
     }
     // Everything the packet may visit is fetched before the leaves' lane tests (the nearest
     // child is visited at once), and a child node's own leaves with it, a level ahead, into the
-    // second-level cache (the leaf's own fetch above then finds them there): a coherent packet
-    // visits most of them, and would otherwise wait for each block on arrival.
+    // second-level cache (a leaf's own fetch, when its parent is expanded, finds them there): a
+    // coherent packet visits most of them, and would otherwise wait for each block on arrival.
     for (std::uint32_t c = candidates; c != 0; c &= c - 1) {
       const int k = __builtin_ctz(c);
       prefetchAll(mesh_, n.child[k]);
       if (n.leafSpan[k] != BvhNode::kEmpty)
-        core::prefetchLinesL2(mesh_.blocks + BvhNode::leafFirst(n.leafSpan[k]),
-                              BvhNode::leafCount(n.leafSpan[k]) * sizeof(TriangleBlock));
+        core::prefetchLines<2>(mesh_.blocks + BvhNode::leafFirst(n.leafSpan[k]),
+                               BvhNode::leafCount(n.leafSpan[k]) * sizeof(TriangleBlock));
     }
     const int base = top;
     for (; candidates != 0; candidates &= candidates - 1) {
