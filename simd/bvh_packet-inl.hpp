@@ -299,7 +299,7 @@ class RayPacket {
   Closest& own(int i) {
     if (!(owned_ >> i & 1)) {
       owned_ |= 1u << i;
-      hits_[i] = Closest(tMax_[i]);
+      std::construct_at(&hits_[i], tMax_[i]);
       if (found_ >> i & 1) hits_[i].offer(tMin_[i], id_[i]);
     }
     return hits_[i];
@@ -549,7 +549,11 @@ class RayPacket {
   alignas(64) float tMax_[N], tMin_[N];
   alignas(64) std::uint32_t id_[N];
   std::uint32_t found_ = 0, owned_ = 0;
-  Closest hits_[N];
+  // Built by own() when a lane takes one: few do, and 16 of them span 36 lines a packet would
+  // otherwise write every time.
+  union {
+    Closest hits_[N];
+  };
   alignas(64) float origin_[3][N];
   alignas(64) float inverse_[3][N];
   alignas(64) float sx_[N], sy_[N], sz_[N];

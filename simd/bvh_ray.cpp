@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 
 #include "core/prefetch.hpp"
 #include "core/traversal_ray.hpp"
