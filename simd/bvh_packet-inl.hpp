@@ -431,20 +431,17 @@ class RayPacket {
       for (int k = 0; k < BvhNode::kWidth; ++k)
         candidates |= std::uint32_t(n.child[k] != BvhNode::kEmpty) << k;
     }
-    // Everything the packet may visit is fetched before the leaves' lane tests (the nearest
-    // child is visited at once), and a child node's own leaves with it, a level ahead, into the
-    // second-level cache (a leaf's own fetch, when its parent is expanded, finds them there): a
-    // coherent packet visits most of them, and would otherwise wait for each block on arrival.
-    for (std::uint32_t c = candidates; c != 0; c &= c - 1) {
-      const int k = __builtin_ctz(c);
+    // Each candidate is fetched as it comes (one loop: a second one's exit cost a misprediction
+    // a node), and a child node's own leaves with it, a level ahead, into the second-level cache
+    // (a leaf's own fetch, when its parent is expanded, finds them there): a coherent packet
+    // visits most of them, and would otherwise wait for each block on arrival.
+    const int base = top;
+    for (; candidates != 0; candidates &= candidates - 1) {
+      const int k = __builtin_ctz(candidates);
       prefetchAll(mesh_, n.child[k]);
       if (n.leafSpan[k] != BvhNode::kEmpty)
         core::prefetchLines<2>(mesh_.blocks + BvhNode::leafFirst(n.leafSpan[k]),
                                BvhNode::leafCount(n.leafSpan[k]) * sizeof(TriangleBlock));
-    }
-    const int base = top;
-    for (; candidates != 0; candidates &= candidates - 1) {
-      const int k = __builtin_ctz(candidates);
       Entry kid{n.child[k], cull ? enter[k] : 0.0f, lanes};
       if (!cull || BvhNode::isLeaf(kid.ref)) {
         float key;
