@@ -48,6 +48,7 @@ class RayPacket {
         runs = hn::AllTrue(d, here) &&
                hn::AllTrue(di, hn::Eq(raw, hn::Add(hn::Broadcast<0>(raw), step)));
       }
+      runs_ = runs_ && runs;
 #endif
       auto gather = [&](std::size_t f, hn::Vec<D> absent) {
 #if HWY_TARGET != HWY_SCALAR
@@ -100,11 +101,7 @@ class RayPacket {
       trace<true>();
     else
       trace<false>();
-    for (std::uint32_t m = present_; m != 0; m &= m - 1) {
-      const int i = __builtin_ctz(m);
-      // A lane without a hit holds ElementHit's miss (kNoHit, inf).
-      out[index_[i]] = (owned_ >> i & 1) ? hits_[i].result() : ElementHit{id_[i], tMin_[i]};
-    }
+    write(out);
   }
 
   // The packet as a walker of walkBvh (bvh_walk-inl.hpp). kFinite: every ray's inverse direction
@@ -157,6 +154,39 @@ class RayPacket {
   void trace() {
     Walk<kFinite> walk(*this);
     walkBvh(mesh_.nodes, mesh_.nodeCount, walk, Entry{0, 0.0f, present_});
+  }
+
+  // Each present lane's closest hit at out[index]; a lane without one holds ElementHit's miss
+  // (kNoHit, inf).
+  void write(ElementHit* out) const {
+#if HWY_TARGET != HWY_SCALAR
+    if constexpr (kLanes % 4 == 0) {
+      if (runs_) {  // a run's 4 hits as two 16-byte stores of (id, t) pairs
+        const D d;
+        const hn::RebindToUnsigned<D> du;
+        for (std::size_t h = 0; h < N; h += kLanes) {
+          const auto ids = hn::BitCast(d, hn::Load(du, id_ + h)), ts = hn::Load(d, tMin_ + h);
+          // Per 128-bit block j: lanes 4j and 4j + 1 interleaved, then 4j + 2 and 4j + 3.
+          alignas(64) float pairs[2][kLanes];
+          hn::Store(hn::InterleaveLower(d, ids, ts), d, pairs[0]);
+          hn::Store(hn::InterleaveUpper(d, ids, ts), d, pairs[1]);
+          for (std::size_t r = 0; r < kLanes; r += 4) {
+            std::memcpy(out + index_[h + r], pairs[0] + r, 2 * sizeof(ElementHit));
+            std::memcpy(out + index_[h + r] + 2, pairs[1] + r, 2 * sizeof(ElementHit));
+          }
+        }
+        for (std::uint32_t m = owned_; m != 0; m &= m - 1) {
+          const int i = __builtin_ctz(m);
+          out[index_[i]] = hits_[i].result();
+        }
+        return;
+      }
+    }
+#endif
+    for (std::uint32_t m = present_; m != 0; m &= m - 1) {
+      const int i = __builtin_ctz(m);
+      out[index_[i]] = (owned_ >> i & 1) ? hits_[i].result() : ElementHit{id_[i], tMin_[i]};
+    }
   }
 
 #if HWY_TARGET != HWY_SCALAR  // one lane: no runs
@@ -555,6 +585,7 @@ class RayPacket {
   alignas(64) float inverse_[3][N];
   alignas(64) float sx_[N], sy_[N], sz_[N];
   std::uint32_t present_ = 0;         // the lanes with a ray, as bits
+  bool runs_ = true;                  // every lane present, in runs of 4 consecutive rays
   std::uint32_t frames_ = 0;          // the frames present, as bits
   std::uint32_t frameLanes_[6] = {};  // per frame, its lanes
   bool finite_ = true;
