@@ -43,7 +43,10 @@ class RayPacket {
 #if HWY_TARGET != HWY_SCALAR
       // Tiles' rows and rows of the stream are runs of 4 consecutive rays.
       bool runs = false;
+      // Held apart from the index (which the packet's stores of ids might alias), read once.
+      std::uint32_t starts[(kLanes + 3) / 4];
       if constexpr (kLanes % 4 == 0) {
+        for (std::size_t j = 0; j < kLanes / 4; ++j) starts[j] = index[h + 4 * j];
         const auto step = hn::And(hn::Iota(di, 0), hn::Set(di, 3));
         runs = hn::AllTrue(d, here) &&
                hn::AllTrue(di, hn::Eq(raw, hn::Add(hn::Broadcast<0>(raw), step)));
@@ -53,7 +56,7 @@ class RayPacket {
       auto gather = [&](std::size_t f, hn::Vec<D> absent) {
 #if HWY_TARGET != HWY_SCALAR
         if constexpr (kLanes % 4 == 0)
-          if (runs) return loadRuns(d, rays[f], index + h);
+          if (runs) return loadRuns(d, rays[f], starts);
 #endif
         return hn::IfThenElse(here, hn::GatherIndex(d, rays[f], at), absent);
       };
@@ -190,16 +193,16 @@ class RayPacket {
   }
 
 #if HWY_TARGET != HWY_SCALAR  // one lane: no runs
-  // A field's values for lanes that are runs of 4 consecutive rays (index[0], index[4], ...: the
-  // first of each run), one 4-float load a run where a gather loads lane by lane.
+  // A field's values for lanes that are runs of 4 consecutive rays (starts: the first ray of
+  // each), one 4-float load a run where a gather loads lane by lane.
   template <class DV>
-  static hn::Vec<DV> loadRuns(DV d, const float* field, const std::uint32_t* index) {
+  static hn::Vec<DV> loadRuns(DV d, const float* field, const std::uint32_t* starts) {
     if constexpr (hn::MaxLanes(DV()) <= 4) {
-      return hn::LoadU(d, field + index[0]);
+      return hn::LoadU(d, field + starts[0]);
     } else {
       const hn::Half<DV> half;
-      return hn::Combine(d, loadRuns(half, field, index + hn::MaxLanes(half)),
-                         loadRuns(half, field, index));
+      return hn::Combine(d, loadRuns(half, field, starts + hn::MaxLanes(half) / 4),
+                         loadRuns(half, field, starts));
     }
   }
 #endif
