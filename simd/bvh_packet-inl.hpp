@@ -159,9 +159,10 @@ class RayPacket {
     walkBvh(mesh_.nodes, mesh_.nodeCount, walk, Entry{0, 0.0f, present_});
   }
 
-  // Each present lane's closest hit at out[index]; a lane without one holds ElementHit's miss
-  // (kNoHit, inf).
+  // Each present lane's closest hit at out[index]: the rows' (a lane without a hit holds
+  // ElementHit's miss, kNoHit and inf), then the owned lanes' over them.
   void write(ElementHit* out) const {
+    bool written = false;
 #if HWY_TARGET != HWY_SCALAR
     if constexpr (kLanes % 4 == 0) {
       if (runs_) {  // a run's 4 hits as two 16-byte stores of (id, t) pairs
@@ -178,17 +179,18 @@ class RayPacket {
             std::memcpy(out + index_[h + r] + 2, pairs[1] + r, 2 * sizeof(ElementHit));
           }
         }
-        for (std::uint32_t m = owned_; m != 0; m &= m - 1) {
-          const int i = __builtin_ctz(m);
-          out[index_[i]] = hits_[i].result();
-        }
-        return;
+        written = true;
       }
     }
 #endif
-    for (std::uint32_t m = present_; m != 0; m &= m - 1) {
+    if (!written)
+      for (std::uint32_t m = present_ & ~owned_; m != 0; m &= m - 1) {
+        const int i = __builtin_ctz(m);
+        out[index_[i]] = ElementHit{id_[i], tMin_[i]};
+      }
+    for (std::uint32_t m = owned_; m != 0; m &= m - 1) {
       const int i = __builtin_ctz(m);
-      out[index_[i]] = (owned_ >> i & 1) ? hits_[i].result() : ElementHit{id_[i], tMin_[i]};
+      out[index_[i]] = hits_[i].result();
     }
   }
 
