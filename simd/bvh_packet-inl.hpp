@@ -309,11 +309,11 @@ class RayPacket {
     return bits;
   }
 
-  // The block's first `count` triangles whose box some ray of the packet may enter, as bits: the
-  // node pre-test on the triangles' bounds, which the leaf's box holds exactly (both are the
+  // The block's triangles among `leaf` (bits) whose box some ray of the packet may enter, as bits:
+  // the node pre-test on the triangles' bounds, which the leaf's box holds exactly (both are the
   // vertices' min and max), so the same monotone rounding argument keeps every triangle a lane
   // could hit.
-  std::uint32_t maybeHit(const TriangleBlock& block, std::uint32_t count) const {
+  std::uint32_t maybeHit(const TriangleBlock& block, std::uint32_t leaf) const {
     const hn::CappedTag<float, BvhNode::kWidth> d;
     constexpr std::size_t kBoxes = hn::MaxLanes(d);
     alignas(32) float lo[3][BvhNode::kWidth], hi[3][BvhNode::kWidth], enter[BvhNode::kWidth];
@@ -326,7 +326,7 @@ class RayPacket {
       }
     const float* const los[3] = {lo[0], lo[1], lo[2]};
     const float* const his[3] = {hi[0], hi[1], hi[2]};
-    return maybeEntered(los, his, enter) & ((1u << count) - 1);
+    return maybeEntered(los, his, enter) & leaf;
   }
 
   // Lane i's hits as a ClosestHits from now on (it walks alone, or met a tie): the one hit its
@@ -502,8 +502,10 @@ class RayPacket {
     const D d;
     const hn::RebindToUnsigned<D> du;
     const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
-    const std::uint32_t count = BvhNode::leafCount(ref);
-    const std::uint32_t triangles = cull_ ? maybeHit(block, count) : (1u << count) - 1;
+    // The leaf's lanes of its block: the others belong to other leaves, or repeat.
+    const std::uint32_t leaf = ((1u << BvhNode::leafCount(ref)) - 1)
+                               << BvhNode::leafFirst(ref) % TriangleBlock::kWidth;
+    const std::uint32_t triangles = cull_ ? maybeHit(block, leaf) : leaf;
     if (triangles == 0) return;
     const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const auto none = hn::Set(d, std::numeric_limits<float>::quiet_NaN());

@@ -97,13 +97,15 @@ class RayCore {
   bool leaf(std::uint32_t ref) {
     const D d;
     const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
-    const std::size_t count = BvhNode::leafCount(ref);
-    for (std::size_t h = 0; h < count; h += hn::Lanes(d)) {
+    // The leaf's lanes of its block, [begin, end): the others belong to other leaves, or repeat.
+    const std::size_t begin = BvhNode::leafFirst(ref) % TriangleBlock::kWidth;
+    const std::size_t end = begin + BvhNode::leafCount(ref);
+    for (std::size_t h = begin / hn::Lanes(d) * hn::Lanes(d); h < end; h += hn::Lanes(d)) {
       hn::Vec<D> t;
       auto hit = watertightHits(
           d, ray_, sink_.bound(), [&](int q, int k) { return hn::Load(d, block.v[q][k] + h); }, t);
-      // Lanes past the count repeat the leaf's first triangle: not offered twice.
-      hit = hn::And(hit, hn::FirstN(d, count - h));
+      hit = hn::And(hit,
+                    hn::AndNot(hn::FirstN(d, begin > h ? begin - h : 0), hn::FirstN(d, end - h)));
       if (hn::AllFalse(d, hit)) continue;
       if constexpr (Sink::kAnyHit) {
         sink_.found = true;

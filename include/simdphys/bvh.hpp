@@ -24,9 +24,11 @@ struct BvhBuildOptions {
   // Leaves hold at most this many primitives (1 to 16, the leaf reference's count field); a range
   // that fits is split further only while the surface-area heuristic says a split is cheaper.
   std::uint32_t maxLeafSize = 1;
-  // Leaves start at multiples of this in order() (1, or maxLeafSize rounded up), and the slots of
-  // a leaf's last block past its count repeat its first primitive: an owner can then store the
-  // primitives in blocks of `leafAlign` and find a leaf's block as first / leafAlign.
+  // Blocks of this many slots in order() (1, or at least maxLeafSize): no leaf straddles a multiple
+  // of leafAlign, a block may hold several leaves (a node's leaves are packed together), and a slot
+  // no leaf takes repeats its block's first primitive. An owner can then store the primitives in
+  // blocks of `leafAlign` and find a leaf as lanes first % leafAlign onwards of block
+  // first / leafAlign.
   std::uint32_t leafAlign = 1;
   // The SAH has no node cost to tune: a split inside a node adds no node to visit (the halves
   // take two of its slots), and a range a leaf can hold always becomes a leaf. It weighs leaves
@@ -68,7 +70,7 @@ class Bvh {
 
   std::size_t size() const { return primitives_; }
   std::span<const BvhNode> nodes() const { return nodes_; }
-  // Primitive ids in leaf order, leaves aligned to options().leafAlign (empty for a box tree).
+  // Primitive ids in leaf order, in blocks of options().leafAlign (empty for a box tree).
   std::span<const std::uint32_t> order() const { return order_; }
   const BvhBuildOptions& options() const { return options_; }
   // Longest root-to-leaf path, in nodes.

@@ -27,9 +27,9 @@ struct alignas(64) BvhNode {
   float maxX[kWidth], maxY[kWidth], maxZ[kWidth];
   std::uint32_t child[kWidth];
   // leafSpan[k], for a child node: its own leaf children, which lie together (Bvh::build places
-  // leaves in node order), as (count - 1) << kCountShift | first, first the position of the
-  // first one's block of leafAlign primitives and count the blocks; kEmpty if it has none or the
-  // tree has no blocks. Lets a walk fetch a node's leaves with the node, one level ahead. It fills
+  // leaves in node order), as (count - 1) << kCountShift | first, first the first block of
+  // leafAlign primitives they lie in and count the blocks; kEmpty if it has none or the tree has no
+  // blocks. Lets a walk fetch a node's leaves with the node, one level ahead. It fills
   // the last line's padding (the node stays 4 lines).
   std::uint32_t leafSpan[kWidth];
 
@@ -40,7 +40,7 @@ struct alignas(64) BvhNode {
 
 static_assert(sizeof(BvhNode) == 256, "four cache lines");
 
-// A mesh leaf's triangles (mesh_bvh.hpp): up to 8, one per lane.
+// Mesh leaves' triangles (mesh_bvh.hpp): 8 lanes, a leaf a run of them (Bvh's leafAlign blocks).
 struct alignas(64) TriangleBlock {
   static constexpr int kWidth = 8;
   float v[3][3][kWidth];  // v[vertex a, b, c][coordinate x, y, z][lane]

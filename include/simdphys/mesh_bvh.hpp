@@ -4,8 +4,8 @@
 // The tree is the library's one Bvh, built over the triangles' bounds with leaves of up to
 // 8 triangles. The triangles are copied into leaf order as blocks of 8 (Embree's Triangle8): the
 // 9 vertex coordinates as rows of 8 floats and the 8 triangle ids, so one SIMD watertight test
-// (Woop, Benthin, Wald 2013; raycast.hpp) covers a leaf. A leaf's block is its first / 8; lanes
-// past its count repeat its first triangle, which changes no answer.
+// (Woop, Benthin, Wald 2013; raycast.hpp) covers a leaf. Leaves share blocks: a leaf is lanes
+// first % 8 onwards of block first / 8, and the test masks the block's other lanes.
 //
 // Closest hit: the smallest t in [0, tMax], and where several triangles are hit within 1e-6
 // relative of it (t <= tMin * (1 + 1e-6)), the one with the smallest id wins (workload W2's rule),

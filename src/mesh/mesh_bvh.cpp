@@ -42,7 +42,8 @@ class RayCore {
 
   bool leaf(std::uint32_t ref) {
     const TriangleBlock& b = blocks_[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
-    for (std::uint32_t l = 0; l < BvhNode::leafCount(ref); ++l) {
+    const std::uint32_t begin = BvhNode::leafFirst(ref) % TriangleBlock::kWidth;
+    for (std::uint32_t l = begin; l < begin + BvhNode::leafCount(ref); ++l) {
       const Triangle tri{{b.v[0][0][l], b.v[0][1][l], b.v[0][2][l]},
                          {b.v[1][0][l], b.v[1][1][l], b.v[1][2][l]},
                          {b.v[2][0][l], b.v[2][1][l], b.v[2][2][l]}};
