@@ -60,16 +60,21 @@ class RayPacket {
 #endif
         return hn::IfThenElse(here, hn::GatherIndex(d, rays[f], at), absent);
       };
-      hn::Vec<D> direction[3], inverse[3];
+      // Every field loaded before the packet stores anything: loads issued among the stores ran
+      // slower (docs/bvh.md).
+      hn::Vec<D> origin[3], direction[3], inverse[3];
+      for (int a = 0; a < 3; ++a) {
+        origin[a] = gather(R::origin + std::size_t(a), zero);
+        direction[a] = gather(R::direction + std::size_t(a), one);
+      }
+      const auto tMax = gather(R::tMax, hn::Set(d, -std::numeric_limits<float>::infinity()));
       bool finite = true;
       for (int a = 0; a < 3; ++a) {
-        hn::Store(gather(R::origin + std::size_t(a), zero), d, origin_[a] + h);
-        direction[a] = gather(R::direction + std::size_t(a), one);
+        hn::Store(origin[a], d, origin_[a] + h);
         inverse[a] = hn::Div(one, direction[a]);
         hn::Store(inverse[a], d, inverse_[a] + h);
         finite = finite && hn::AllTrue(d, hn::IsFinite(inverse[a]));
       }
-      const auto tMax = gather(R::tMax, hn::Set(d, -std::numeric_limits<float>::infinity()));
       hn::Store(tMax, d, bound_ + h);
       hn::Store(tMax, d, tMax_ + h);
       hn::Store(hn::Set(d, std::numeric_limits<float>::infinity()), d, tMin_ + h);
