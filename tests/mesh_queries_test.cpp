@@ -227,6 +227,39 @@ TEST(ProceduralMeshes, BoxAndSphereAreClosedAndFaceOut) {
   EXPECT_EQ(hf.triangles[1], (std::array<std::uint32_t, 3>{0, 4, 3}));  // W2's second triangle
 }
 
+// Bvh::build's blocks (bvh.hpp): leaves of up to 4 in blocks of 8 lie within one block, several
+// to a block, each primitive in one leaf, and every slot no leaf takes repeats its block's first.
+TEST(BvhBlocks, LeavesArePackedIntoBlocks) {
+  const Mesh soup = test::randomSoup(52, 3000, 60, 3);
+  std::vector<Aabb> bounds;
+  for (std::size_t i = 0; i < soup.size(); ++i) {
+    const Triangle t = soup.triangle(i);
+    bounds.push_back({t.a.cwiseMin(t.b).cwiseMin(t.c), t.a.cwiseMax(t.b).cwiseMax(t.c)});
+  }
+  Bvh tree;
+  tree.build(bounds, {4, 8});
+  const auto order = tree.order();
+  ASSERT_EQ(order.size() % 8, 0u);
+  std::vector<int> taken(order.size(), 0), seen(soup.size(), 0);
+  std::size_t leaves = 0;
+  for (const BvhNode& n : tree.nodes())
+    for (std::uint32_t c : n.child) {
+      if (c == BvhNode::kEmpty || !BvhNode::isLeaf(c)) continue;
+      ++leaves;
+      const std::uint32_t first = BvhNode::leafFirst(c), count = BvhNode::leafCount(c);
+      ASSERT_LE(count, 4u);
+      ASSERT_LE(first % 8 + count, 8u) << "leaf at " << first << " straddles a block";
+      for (std::uint32_t s = first; s < first + count; ++s) ++taken[s], ++seen[order[s]];
+    }
+  for (std::size_t i = 0; i < soup.size(); ++i) ASSERT_EQ(seen[i], 1) << "primitive " << i;
+  for (std::size_t s = 0; s < order.size(); ++s) {
+    ASSERT_LE(taken[s], 1) << "slot " << s << " in two leaves";
+    if (taken[s] == 0) EXPECT_EQ(order[s], order[s / 8 * 8]) << "slot " << s;
+  }
+  // Leaves of 1 to 4 in blocks of 8: one block each would give as many blocks as leaves.
+  EXPECT_LT(order.size() / 8, leaves);
+}
+
 TEST(MeshErrors, BadMeshesAreNamed) {
   Mesh m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
