@@ -41,8 +41,10 @@ HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const h
     }
     u = hn::Load(d, U[0]), w1 = hn::Load(d, U[1]), w2 = hn::Load(d, U[2]);
   }
-  const auto anyNegative = hn::Or(hn::Lt(u, zero), hn::Or(hn::Lt(w1, zero), hn::Lt(w2, zero)));
-  const auto anyPositive = hn::Or(hn::Gt(u, zero), hn::Or(hn::Gt(w1, zero), hn::Gt(w2, zero)));
+  // Some edge function negative and some positive, from their least and most: two compares where
+  // six and four mask ors were (a lane with a NaN misses either way, its det being NaN).
+  const auto anyNegative = hn::Lt(hn::Min(u, hn::Min(w1, w2)), zero);
+  const auto anyPositive = hn::Gt(hn::Max(u, hn::Max(w1, w2)), zero);
   const auto det = hn::Add(hn::Add(u, w1), w2);
   // A lane whose point is outside an edge, or whose triangle is degenerate, misses at any t:
   // with none left, the depth and its division are skipped (Embree's early out).
