@@ -30,7 +30,8 @@ HWY_INLINE hn::Mask<D> watertightSheared(D d, const hn::Vec<D> (&px)[3], const h
   auto u = edge(px[2], py[1], py[2], px[1]);
   auto w1 = edge(px[0], py[2], py[0], px[2]);  // the scalar's v
   auto w2 = edge(px[1], py[0], py[1], px[0]);  // the scalar's w
-  const auto onEdge = hn::Or(hn::Eq(u, zero), hn::Or(hn::Eq(w1, zero), hn::Eq(w2, zero)));
+  // Some edge function zero: its least magnitude is (one compare, no mask ors).
+  const auto onEdge = hn::Eq(hn::Min(hn::Abs(u), hn::Min(hn::Abs(w1), hn::Abs(w2))), zero);
   if (HWY_UNLIKELY(!hn::AllFalse(d, onEdge))) {
     alignas(64) float X[3][kMaxLanes], Y[3][kMaxLanes], U[3][kMaxLanes];
     for (int q = 0; q < 3; ++q) hn::Store(px[q], d, X[q]), hn::Store(py[q], d, Y[q]);
