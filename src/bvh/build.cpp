@@ -266,16 +266,17 @@ bool wellFormed(const Aabb& b) {
 // Places every multi-primitive leaf in a new order, in node order (so leaves a traversal meets
 // together lie together), packed into blocks of `align` slots without straddling one: each node's
 // leaves, largest first, go to the first of its blocks with room, starting with the block the
-// previous node left open. W2's leaves of 2, 4, 6 and 8 then take 22% fewer blocks than one block
-// each. A slot no leaf takes repeats its block's first primitive.
+// previous node left open. W2's leaves of 2, 4, 6 and 8 then take a quarter fewer blocks than one
+// block each. A slot no leaf takes repeats its block's first primitive.
 AlignedVector<std::uint32_t> alignLeaves(AlignedVector<BvhNode>& nodes,
                                          const AlignedVector<std::uint32_t>& order,
                                          std::uint32_t align) {
   constexpr std::uint32_t kFree = BvhNode::kEmpty;
   AlignedVector<std::uint32_t> aligned;
   aligned.reserve(order.size() + order.size() / 4);
-  std::uint32_t open = 0;                // the first block a node may fill
-  std::array<std::uint32_t, 16> used{};  // slots taken in blocks open, open + 1, ...
+  std::uint32_t open = 0;  // the first block a node may fill
+  // Slots taken in blocks open, open + 1, ...: a node adds at most a block a leaf.
+  std::array<std::uint32_t, BvhNode::kWidth + 1> used{};
   for (BvhNode& node : nodes) {
     std::array<int, BvhNode::kWidth> leaves;
     int n = 0;
@@ -296,7 +297,8 @@ AlignedVector<std::uint32_t> alignLeaves(AlignedVector<BvhNode>& nodes,
       return BvhNode::leafCount(node.child[a]) > BvhNode::leafCount(node.child[b]);
     });
     const std::uint32_t blocks = std::uint32_t(aligned.size()) / align;
-    // Only the last block stays open to the next node: earlier ones had no room for its leaves.
+    // Of the blocks before, only the last stays open to this node: a node's leaves then lie in
+    // consecutive blocks (leafSpan).
     if (blocks > open + 1) used[0] = used[blocks - 1 - open], open = blocks - 1;
     for (int i = 0; i < n; ++i) {
       std::uint32_t& c = node.child[leaves[i]];
