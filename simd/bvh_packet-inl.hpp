@@ -506,10 +506,10 @@ class RayPacket {
   void leaf(std::uint32_t ref, std::uint32_t lanes) {
     const D d;
     const hn::RebindToUnsigned<D> du;
-    const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
+    const TriangleBlock& block = mesh_.blocks[TriangleBlock::of(ref)];
     // The leaf's lanes of its block: the others belong to other leaves, or repeat.
     const std::uint32_t leaf = ((1u << BvhNode::leafCount(ref)) - 1)
-                               << BvhNode::leafFirst(ref) % TriangleBlock::kWidth;
+                               << TriangleBlock::firstLane(ref);
     const std::uint32_t triangles = cull_ ? maybeHit(block, leaf) : leaf;
     if (triangles == 0) return;
     const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());

@@ -38,7 +38,7 @@ constexpr int kRow = BvhNode::kWidth;
 // block's x coordinates) is fetched while the rest is tested.
 HWY_INLINE void prefetch(const MeshView& mesh, std::uint32_t ref) {
   if (BvhNode::isLeaf(ref))
-    hwy::Prefetch(mesh.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth);
+    hwy::Prefetch(mesh.blocks + TriangleBlock::of(ref));
   else
     hwy::Prefetch(mesh.nodes + ref);
 }
@@ -46,8 +46,7 @@ HWY_INLINE void prefetch(const MeshView& mesh, std::uint32_t ref) {
 // All of it: a packet tests every line of what it visits.
 HWY_INLINE void prefetchAll(const MeshView& mesh, std::uint32_t ref) {
   if (BvhNode::isLeaf(ref))
-    core::prefetchLines(mesh.blocks + BvhNode::leafFirst(ref) / TriangleBlock::kWidth,
-                        sizeof(TriangleBlock));
+    core::prefetchLines(mesh.blocks + TriangleBlock::of(ref), sizeof(TriangleBlock));
   else
     core::prefetchLines(mesh.nodes + ref, sizeof(BvhNode));
 }
@@ -96,9 +95,9 @@ class RayCore {
   // Tests the leaf's block; true stops the traversal (the sink wants any hit and has one).
   bool leaf(std::uint32_t ref) {
     const D d;
-    const TriangleBlock& block = mesh_.blocks[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
+    const TriangleBlock& block = mesh_.blocks[TriangleBlock::of(ref)];
     // The leaf's lanes of its block, [begin, end): the others belong to other leaves, or repeat.
-    const std::size_t begin = BvhNode::leafFirst(ref) % TriangleBlock::kWidth;
+    const std::size_t begin = TriangleBlock::firstLane(ref);
     const std::size_t end = begin + BvhNode::leafCount(ref);
     for (std::size_t h = begin / hn::Lanes(d) * hn::Lanes(d); h < end; h += hn::Lanes(d)) {
       hn::Vec<D> t;

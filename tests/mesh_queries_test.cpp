@@ -67,8 +67,7 @@ TEST_P(MeshQueries, TreeStructureOverTriangles) {
       }
       std::vector<std::uint32_t> blocks;
       for (std::uint32_t g : tree.nodes()[c].child)
-        if (g != BvhNode::kEmpty && BvhNode::isLeaf(g))
-          blocks.push_back(BvhNode::leafFirst(g) / TriangleBlock::kWidth);
+        if (g != BvhNode::kEmpty && BvhNode::isLeaf(g)) blocks.push_back(TriangleBlock::of(g));
       std::sort(blocks.begin(), blocks.end());
       blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
       if (blocks.empty()) {

@@ -45,6 +45,10 @@ struct alignas(64) TriangleBlock {
   static constexpr int kWidth = 8;
   float v[3][3][kWidth];  // v[vertex a, b, c][coordinate x, y, z][lane]
   std::uint32_t id[kWidth];
+
+  // A leaf reference's block, and its first lane there (its lanes run on for its count).
+  static std::uint32_t of(std::uint32_t leaf) { return BvhNode::leafFirst(leaf) / kWidth; }
+  static std::uint32_t firstLane(std::uint32_t leaf) { return BvhNode::leafFirst(leaf) % kWidth; }
 };
 
 // Relative window within which two hits tie (W2): t <= tMin * kTieWindow.

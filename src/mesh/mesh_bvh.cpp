@@ -41,8 +41,8 @@ class RayCore {
   }
 
   bool leaf(std::uint32_t ref) {
-    const TriangleBlock& b = blocks_[BvhNode::leafFirst(ref) / TriangleBlock::kWidth];
-    const std::uint32_t begin = BvhNode::leafFirst(ref) % TriangleBlock::kWidth;
+    const TriangleBlock& b = blocks_[TriangleBlock::of(ref)];
+    const std::uint32_t begin = TriangleBlock::firstLane(ref);
     for (std::uint32_t l = begin; l < begin + BvhNode::leafCount(ref); ++l) {
       const Triangle tri{{b.v[0][0][l], b.v[0][1][l], b.v[0][2][l]},
                          {b.v[1][0][l], b.v[1][1][l], b.v[1][2][l]},
